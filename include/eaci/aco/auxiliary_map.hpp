@@ -1,0 +1,39 @@
+// The auxiliary map (Eq. 12): free cells that could trap an ant become obstacles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "eaci/grid/binary_grid.hpp"
+
+namespace eaci {
+
+// How cells outside the map count in Eq. 12. The paper does not say.
+// kFree is the default: with kObstacle every free cell of the map border that
+// touches an obstacle (and every corner cell) would be blocked.
+enum class AuxiliaryBorder { kFree, kObstacle };
+
+// Eq. 12: a free cell becomes an obstacle when two perpendicular 4-neighbours
+// are obstacles: (left & up), (up & right), (right & down) or (down & left).
+// One pass reading the original map only; `start` and `goal` are never converted.
+inline BinaryGrid auxiliaryMap(const BinaryGrid& original, Cell start, Cell goal,
+                               AuxiliaryBorder border = AuxiliaryBorder::kFree) {
+  BinaryGrid aux = original;
+  auto blocked = [&](int r, int c) {
+    const Cell n{r, c};
+    if (!original.contains(n)) return border == AuxiliaryBorder::kObstacle;
+    return original.isBlocked(n);
+  };
+  for (int r = 0; r < original.height(); ++r) {
+    for (int c = 0; c < original.width(); ++c) {
+      const Cell cell{r, c};
+      if (original.isBlocked(cell) || cell == start || cell == goal) continue;
+      const bool left = blocked(r, c - 1), up = blocked(r - 1, c);
+      const bool right = blocked(r, c + 1), down = blocked(r + 1, c);
+      if ((left && up) || (up && right) || (right && down) || (down && left)) aux.setBlocked(cell, true);
+    }
+  }
+  return aux;
+}
+
+}  // namespace eaci

@@ -1,0 +1,155 @@
+// The iteration loop of an ant colony (Steps 4-6): m ants per iteration, then a pheromone
+// update, for Nc_max iterations, keeping the best complete route over all iterations.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <thread>
+#include <vector>
+
+#include "eaci/aco/ant_walk.hpp"
+#include "eaci/aco/parameters.hpp"
+#include "eaci/aco/pheromone_update.hpp"
+
+namespace eaci {
+
+enum class UpdateRule {
+  kClassic,   // Eq. 10-11 with evaporation rate aco_rho
+  kAdaptive,  // Eq. 23-25
+};
+
+struct ColonyRun {
+  std::vector<std::uint32_t> best_cells;  // grid indices of the best route, S first; empty if none
+  double best_length = std::numeric_limits<double>::infinity();
+  int best_iteration = 0;                 // iteration (1-based) that first found best_length
+  int iterations_run = 0;
+  bool stopped_early = false;             // early_stop_iterations without improvement
+  bool interrupted = false;               // should_stop() said so
+  std::vector<int> lost_ants_per_iteration;
+  std::vector<double> iteration_best_length;  // +infinity where no ant completed
+  std::vector<double> best_length_so_far;     // +infinity until a route is found
+};
+
+// Called between iterations with the number of iterations done; returns true to stop.
+using StopCheck = std::function<bool(int)>;
+// Called after each iteration's pheromone update (e.g. to record snapshots).
+using IterationObserver = std::function<void(int iteration, const PheromoneField&)>;
+
+inline int resolveThreadCount(int requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+class Colony {
+ public:
+  Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se)
+      : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
+        routes_(static_cast<std::size_t>(params.ants)),
+        walkers_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))) {}
+
+  ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
+    ColonyRun run;
+    int since_improvement = 0;
+    for (int iteration = 1; iteration <= params_.max_iterations; ++iteration) {
+      if (should_stop && should_stop(iteration - 1)) {
+        run.interrupted = true;
+        break;
+      }
+      walkAllAnts(iteration);
+      const bool improved = recordIteration(iteration, run);
+      updatePheromone();
+      if (observer) observer(iteration, field_);
+      since_improvement = improved ? 0 : since_improvement + 1;
+      if (params_.early_stop_iterations > 0 && !run.best_cells.empty() &&
+          since_improvement >= params_.early_stop_iterations) {
+        run.stopped_early = true;
+        break;
+      }
+    }
+    return run;
+  }
+
+ private:
+  // Ants of one iteration read the same pheromone and each has its own random stream,
+  // so splitting them over threads cannot change the result.
+  void walkAllAnts(int iteration) {
+    const int ants = params_.ants;
+    const int threads = static_cast<int>(walkers_.size());
+    auto walk_range = [&](int worker, int first, int last) {
+      for (int k = first; k < last; ++k) {
+        SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
+        walkers_[static_cast<std::size_t>(worker)].walk(setup_, rng, routes_[static_cast<std::size_t>(k)]);
+      }
+    };
+    if (threads <= 1) {
+      walk_range(0, 0, ants);
+      return;
+    }
+    std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(threads - 1));
+    const int per_thread = (ants + threads - 1) / threads;
+    for (int t = 1; t < threads; ++t) {
+      const int first = std::min(ants, t * per_thread);
+      const int last = std::min(ants, first + per_thread);
+      pool.emplace_back(walk_range, t, first, last);
+    }
+    walk_range(0, 0, std::min(ants, per_thread));
+    for (std::thread& worker : pool) worker.join();
+  }
+
+  // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so far.
+  bool recordIteration(int iteration, ColonyRun& run) {
+    constexpr double kTolerance = 1e-9;
+    best_ = worst_ = -1;
+    int lost = 0;
+    for (int k = 0; k < static_cast<int>(routes_.size()); ++k) {
+      const AntRoute& route = routes_[static_cast<std::size_t>(k)];
+      if (!route.complete) {
+        ++lost;
+        continue;
+      }
+      if (best_ < 0 || route.length < routes_[static_cast<std::size_t>(best_)].length - kTolerance) best_ = k;
+      if (worst_ < 0 || route.length > routes_[static_cast<std::size_t>(worst_)].length + kTolerance) worst_ = k;
+    }
+    run.iterations_run = iteration;
+    run.lost_ants_per_iteration.push_back(lost);
+    bool improved = false;
+    if (best_ >= 0) {
+      const AntRoute& best = routes_[static_cast<std::size_t>(best_)];
+      run.iteration_best_length.push_back(best.length);
+      if (best.length < run.best_length - kTolerance) {
+        run.best_length = best.length;
+        run.best_cells = best.cells;
+        run.best_iteration = iteration;
+        improved = true;
+      }
+    } else {
+      run.iteration_best_length.push_back(std::numeric_limits<double>::infinity());
+    }
+    run.best_length_so_far.push_back(run.best_length);
+    return improved;
+  }
+
+  void updatePheromone() {
+    if (update_ == UpdateRule::kClassic) {
+      classicPheromoneUpdate(field_, routes_, params_.aco_rho, params_.q);
+    } else {
+      adaptivePheromoneUpdate(field_, routes_, best_, worst_, params_.kappa, params_.q, d_se_);
+    }
+  }
+
+  const WalkSetup& setup_;
+  PheromoneField& field_;
+  const Parameters& params_;
+  UpdateRule update_;
+  double d_se_;
+  std::vector<AntRoute> routes_;
+  std::vector<AntWalker> walkers_;
+  int best_ = -1;
+  int worst_ = -1;
+};
+
+}  // namespace eaci

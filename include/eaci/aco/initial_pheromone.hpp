@@ -1,0 +1,88 @@
+// Non-uniform initial pheromone between consecutive islands (Eq. 18-22).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "eaci/aco/pheromone_field.hpp"
+#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cell_numbering.hpp"
+
+namespace eaci {
+
+// Line A x + B y + C = 0 through the centres of two cells (Eq. 19), in cell units.
+struct Line {
+  double a = 0.0, b = 0.0, c = 0.0;
+
+  static Line through(Point2 p, Point2 q) { return Line{q.y - p.y, p.x - q.x, q.x * p.y - p.x * q.y}; }
+
+  // |A x + B y + C| / sqrt(A^2 + B^2): distance of a point from the line.
+  double distanceTo(Point2 p) const { return std::abs(a * p.x + b * p.y + c) / std::hypot(a, b); }
+};
+
+// Eq. 18-20: pheromone of edge i -> j of a favourable region, the inverse distance of the
+// edge midpoint from the line through the region's islands; if the midpoint is on the
+// line, the inverse distance of node i; if i is on the line too, +infinity.
+inline double regionEdgePheromone(const Line& line, Point2 from, Point2 to) {
+  constexpr double kOnLine = 1e-12;
+  const Point2 mid{(from.x + to.x) / 2.0, (from.y + to.y) / 2.0};
+  const double d_mid = line.distanceTo(mid);
+  if (d_mid > kOnLine) return 1.0 / d_mid;
+  const double d_from = line.distanceTo(from);
+  if (d_from > kOnLine) return 1.0 / d_from;
+  return std::numeric_limits<double>::infinity();
+}
+
+// Eq. 21-22 over the whole map. The favourable region FG_z is the axis-aligned rectangle
+// with islands L_z and L_{z+1} at opposite corners; an edge lies in it when both cells
+// do. Edges in a region take their Eq. 18-20 value (+infinity -> lambda * max tau0);
+// every other edge takes min tau0. An edge in two regions takes the larger value.
+// When no region edge has a finite value (every region a single line of cells), max tau0
+// and min tau0 are taken as 1.
+inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::vector<Cell>& islands,
+                                             double lambda, double alpha) {
+  const double kUnset = -1.0;
+  std::vector<double> region_value(grid.cellCount() * kDirections, kUnset);
+  double max_tau0 = -std::numeric_limits<double>::infinity();
+  double min_tau0 = std::numeric_limits<double>::infinity();
+  for (std::size_t z = 0; z + 1 < islands.size(); ++z) {
+    const Cell p = islands[z], q = islands[z + 1];
+    const Line line = Line::through(cellCentre(p, grid.height()), cellCentre(q, grid.height()));
+    const int r0 = std::min(p.row, q.row), r1 = std::max(p.row, q.row);
+    const int c0 = std::min(p.col, q.col), c1 = std::max(p.col, q.col);
+    auto in_region = [&](Cell c) { return c.row >= r0 && c.row <= r1 && c.col >= c0 && c.col <= c1; };
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) {
+        const Cell from{r, c};
+        for (int d = 0; d < kDirections; ++d) {
+          const Cell to = step(from, d);
+          if (!in_region(to) || !grid.canMove(from, d)) continue;
+          const double value =
+              regionEdgePheromone(line, cellCentre(from, grid.height()), cellCentre(to, grid.height()));
+          double& slot = region_value[grid.index(from) * kDirections + d];
+          slot = std::max(slot, value);
+          if (std::isfinite(value)) {
+            max_tau0 = std::max(max_tau0, value);
+            min_tau0 = std::min(min_tau0, value);
+          }
+        }
+      }
+    }
+  }
+  if (!std::isfinite(max_tau0)) max_tau0 = min_tau0 = 1.0;
+
+  PheromoneField field(grid.cellCount(), min_tau0, alpha);
+  for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) {
+    for (int d = 0; d < kDirections; ++d) {
+      const double value = region_value[cell * kDirections + d];
+      if (value == kUnset) continue;
+      field.tau(cell, d) = std::isfinite(value) ? value : lambda * max_tau0;
+    }
+  }
+  field.refreshWeights();
+  return field;
+}
+
+}  // namespace eaci

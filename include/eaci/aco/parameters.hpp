@@ -1,0 +1,177 @@
+// All solver parameters in one place, with the paper's defaults (Section 5),
+// validated in one place, and settable by name (CLI --set, --params YAML, ROS).
+#pragma once
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eaci {
+
+enum class IslandStrategy {
+  kPaper,  // Eq. 13-15 on the auxiliary map, as the paper defines them
+};
+
+struct Parameters {
+  int ants = 50;                 // m
+  int max_iterations = 100;      // Nc_max
+  double alpha = 1.1;            // pheromone weight (Eq. 8)
+  double beta = 7.0;             // heuristic weight (Eq. 8)
+  double q = 100.0;              // pheromone deposit constant Q (Eq. 11, 24)
+  double kappa = 0.9;            // adaptive evaporation coefficient (Eq. 25)
+  int islands = 9;               // N, islands including S and E (Eq. 13)
+  double lambda = 3.0;           // pheromone expansion coefficient (Eq. 21)
+  double epsilon = 0.5;          // angle coefficient of the turning cost (Eq. 17)
+  double aco_rho = 0.3;          // classic ACO evaporation rate (Eq. 10; the paper gives none)
+  double aco_tau0 = 1.0;         // classic ACO uniform initial pheromone
+  bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
+  IslandStrategy island_strategy = IslandStrategy::kPaper;
+  int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
+  std::uint64_t seed = 1;
+  int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
+};
+
+class ParameterError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// The one place parameters are checked. Returns "" when valid, else a sentence.
+inline std::string validationError(const Parameters& p) {
+  std::ostringstream e;
+  auto finite = [](double v) { return std::isfinite(v); };
+  if (p.ants < 1 || p.ants > 1000000) e << "ants must be in 1..1000000 (got " << p.ants << ")";
+  else if (p.max_iterations < 1 || p.max_iterations > 1000000)
+    e << "max_iterations must be in 1..1000000 (got " << p.max_iterations << ")";
+  else if (!finite(p.alpha) || p.alpha < 0 || p.alpha > 20) e << "alpha must be a number in [0, 20] (got " << p.alpha << ")";
+  else if (!finite(p.beta) || p.beta < 0 || p.beta > 20) e << "beta must be a number in [0, 20] (got " << p.beta << ")";
+  else if (!finite(p.q) || p.q <= 0) e << "q must be a positive number (got " << p.q << ")";
+  else if (!finite(p.kappa) || p.kappa <= 0 || p.kappa > 1.3) e << "kappa must be in (0, 1.3] (got " << p.kappa << ")";
+  else if (p.islands < 2 || p.islands > 100000) e << "islands (N) must be in 2..100000: S and E count (got " << p.islands << ")";
+  else if (!finite(p.lambda) || p.lambda <= 0) e << "lambda must be a positive number (got " << p.lambda << ")";
+  else if (!finite(p.epsilon) || p.epsilon < 0) e << "epsilon must be a number >= 0 (got " << p.epsilon << ")";
+  else if (!finite(p.aco_rho) || p.aco_rho <= 0 || p.aco_rho > 1) e << "aco_rho must be in (0, 1] (got " << p.aco_rho << ")";
+  else if (!finite(p.aco_tau0) || p.aco_tau0 <= 0) e << "aco_tau0 must be a positive number (got " << p.aco_tau0 << ")";
+  else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
+  else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
+  return e.str();
+}
+
+inline void validate(const Parameters& p) {
+  const std::string error = validationError(p);
+  if (!error.empty()) throw ParameterError(error);
+}
+
+inline const char* toString(IslandStrategy s) {
+  switch (s) {
+    case IslandStrategy::kPaper: return "paper";
+  }
+  return "?";
+}
+
+namespace detail {
+
+inline double parseDouble(const std::string& key, const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
+    throw ParameterError(key + ": '" + text + "' is not a number");
+  return v;
+}
+
+inline long long parseInteger(const std::string& key, const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(begin, &end, 10);
+  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
+    throw ParameterError(key + ": '" + text + "' is not an integer");
+  return v;
+}
+
+inline int parseInt(const std::string& key, const std::string& text) {
+  const long long v = parseInteger(key, text);
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw ParameterError(key + ": " + text + " is out of range");
+  return static_cast<int>(v);
+}
+
+inline bool parseBool(const std::string& key, const std::string& text) {
+  std::string t = text;
+  for (char& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (t == "true" || t == "1" || t == "yes" || t == "on") return true;
+  if (t == "false" || t == "0" || t == "no" || t == "off") return false;
+  throw ParameterError(key + ": '" + text + "' is not a boolean (true/false)");
+}
+
+using Setter = std::function<void(Parameters&, const std::string&)>;
+
+inline const std::map<std::string, Setter>& parameterSetters() {
+  static const std::map<std::string, Setter> setters = {
+      {"ants", [](Parameters& p, const std::string& v) { p.ants = parseInt("ants", v); }},
+      {"max_iterations", [](Parameters& p, const std::string& v) { p.max_iterations = parseInt("max_iterations", v); }},
+      {"alpha", [](Parameters& p, const std::string& v) { p.alpha = parseDouble("alpha", v); }},
+      {"beta", [](Parameters& p, const std::string& v) { p.beta = parseDouble("beta", v); }},
+      {"q", [](Parameters& p, const std::string& v) { p.q = parseDouble("q", v); }},
+      {"kappa", [](Parameters& p, const std::string& v) { p.kappa = parseDouble("kappa", v); }},
+      {"islands", [](Parameters& p, const std::string& v) { p.islands = parseInt("islands", v); }},
+      {"lambda", [](Parameters& p, const std::string& v) { p.lambda = parseDouble("lambda", v); }},
+      {"epsilon", [](Parameters& p, const std::string& v) { p.epsilon = parseDouble("epsilon", v); }},
+      {"aco_rho", [](Parameters& p, const std::string& v) { p.aco_rho = parseDouble("aco_rho", v); }},
+      {"aco_tau0", [](Parameters& p, const std::string& v) { p.aco_tau0 = parseDouble("aco_tau0", v); }},
+      {"allow_corner_cutting",
+       [](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); }},
+      {"island_strategy",
+       [](Parameters& p, const std::string& v) {
+         if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
+         else throw ParameterError("island_strategy: '" + v + "' is not one of: paper");
+       }},
+      {"early_stop_iterations",
+       [](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); }},
+      {"seed",
+       [](Parameters& p, const std::string& v) {
+         char* end = nullptr;
+         errno = 0;
+         const unsigned long long s = std::strtoull(v.c_str(), &end, 10);
+         if (v.empty() || v[0] == '-' || v[0] == '+' || *end != '\0' || errno == ERANGE)
+           throw ParameterError("seed: '" + v + "' is not an integer in 0..18446744073709551615");
+         p.seed = static_cast<std::uint64_t>(s);
+       }},
+      {"threads", [](Parameters& p, const std::string& v) { p.threads = parseInt("threads", v); }},
+  };
+  return setters;
+}
+
+}  // namespace detail
+
+inline std::vector<std::string> parameterNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : detail::parameterSetters()) names.push_back(entry.first);
+  return names;
+}
+
+// Sets one parameter from its text form. Throws ParameterError for an unknown
+// key or a value of the wrong type; range checks are validate()'s job.
+inline void setParameter(Parameters& p, const std::string& key, const std::string& value) {
+  const auto& setters = detail::parameterSetters();
+  const auto it = setters.find(key);
+  if (it == setters.end()) {
+    std::string known;
+    for (const auto& entry : setters) known += (known.empty() ? "" : ", ") + entry.first;
+    throw ParameterError("unknown parameter '" + key + "' (known: " + known + ")");
+  }
+  it->second(p, value);
+}
+
+}  // namespace eaci

@@ -1,0 +1,57 @@
+// EACI (Section 4) and the classic ACO baseline (Section 3) on a BinaryGrid.
+// Both expect validated parameters and free, mutually reachable, distinct S and E;
+// eaci::plan() checks all of that before it calls them.
+#pragma once
+
+#include <vector>
+
+#include "eaci/aco/auxiliary_map.hpp"
+#include "eaci/aco/colony.hpp"
+#include "eaci/aco/initial_pheromone.hpp"
+#include "eaci/aco/islands.hpp"
+#include "eaci/grid/reachability.hpp"
+
+namespace eaci {
+
+struct ColonyResult {
+  std::vector<Cell> waypoints;  // EACI: the islands L_1 = S .. L_N = E; ACO: S, E
+  ColonyRun run;
+  PheromoneField pheromone;     // the field after the last iteration
+};
+
+// Islands for the chosen strategy (Eq. 12-15 for IslandStrategy::kPaper).
+inline std::vector<Cell> chooseIslands(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params) {
+  const BinaryGrid aux = auxiliaryMap(grid, start, goal);
+  return paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands);
+}
+
+// Steps 1-7: auxiliary map and islands, non-uniform initial pheromone, ants walking leg by
+// leg with the turning-aware heuristic, adaptive update.
+inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params,
+                              const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
+  ColonyResult result;
+  result.waypoints = chooseIslands(grid, start, goal, params);
+  result.pheromone = initialIslandPheromone(grid, result.waypoints, params.lambda, params.alpha);
+  if (observer) observer(0, result.pheromone);
+  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
+                        params.epsilon);
+  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
+  result.run = colony.run(should_stop, observer);
+  return result;
+}
+
+// Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
+inline ColonyResult solveClassicAco(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params,
+                                    const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
+  ColonyResult result;
+  result.waypoints = {start, goal};
+  result.pheromone = PheromoneField(grid.cellCount(), params.aco_tau0, params.alpha);
+  if (observer) observer(0, result.pheromone);
+  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kGoalDistance, params.beta,
+                        params.epsilon);
+  Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal));
+  result.run = colony.run(should_stop, observer);
+  return result;
+}
+
+}  // namespace eaci

@@ -1,0 +1,32 @@
+// The paper's serial numbering and cell-centre coordinates (Eq. 1-4).
+#pragma once
+
+#include <cstdint>
+
+#include "eaci/grid/cell.hpp"
+
+namespace eaci {
+
+// Eq. 1-2: serial number g in 1..W*H, left to right, top to bottom.
+inline std::int64_t serialNumber(Cell c, int width) {
+  return static_cast<std::int64_t>(c.row) * width + c.col + 1;
+}
+
+// Inverse of Eq. 1-2: row = ceil(g / W) - 1, column = g - (row)*W - 1 (both 0-based).
+inline Cell cellFromSerial(std::int64_t g, int width) {
+  const std::int64_t row = (g - 1) / width;
+  return Cell{static_cast<int>(row), static_cast<int>(g - 1 - row * width)};
+}
+
+struct Point2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+// Eq. 3-4: centre of the cell, origin at the bottom-left corner of the map, y up,
+// cell size a. With 1-based r, c: x = (c - 0.5) a, y = (H - r + 0.5) a.
+inline Point2 cellCentre(Cell c, int height, double cell_size = 1.0) {
+  return Point2{(c.col + 0.5) * cell_size, (height - c.row - 0.5) * cell_size};
+}
+
+}  // namespace eaci

@@ -1,0 +1,182 @@
+// The one entry point: plan a route on an occupancy grid with EACI, classic ACO or A*.
+// Checks every input and turns each problem into a status and a one-line reason.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "eaci/aco/parameters.hpp"
+#include "eaci/aco/solvers.hpp"
+#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/grid_view.hpp"
+#include "eaci/metrics/path_metrics.hpp"
+#include "eaci/search/astar.hpp"
+
+namespace eaci {
+
+enum class Algorithm { kEaci, kAco, kAStar };
+
+inline const char* toString(Algorithm a) {
+  switch (a) {
+    case Algorithm::kEaci: return "eaci";
+    case Algorithm::kAco: return "aco";
+    case Algorithm::kAStar: return "astar";
+  }
+  return "?";
+}
+
+inline bool parseAlgorithm(const std::string& text, Algorithm& out) {
+  if (text == "eaci") out = Algorithm::kEaci;
+  else if (text == "aco") out = Algorithm::kAco;
+  else if (text == "astar") out = Algorithm::kAStar;
+  else return false;
+  return true;
+}
+
+enum class PlanStatus {
+  kSuccess,
+  kNoPath,        // the goal cannot be reached, or no ant reached it in time
+  kInvalidInput,  // bad parameters, empty map, start/goal off the map or in an obstacle, map too large
+};
+
+// Ant colonies keep two doubles per directed edge: 128 bytes per cell. Maps that would
+// need more than this are refused (about 16.7 million cells, e.g. 4096 x 4096).
+constexpr std::size_t kMaxPheromoneBytes = std::size_t{2} << 30;
+constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
+
+struct PlanOptions {
+  bool record_pheromone = false;   // fill PlanResult::pheromone (strongest edge leaving each cell)
+  StopCheck should_stop;           // asked between iterations; the best route so far is returned
+  IterationObserver observer;      // sees the field at iteration 0 (initial) and after each update
+};
+
+struct PlanResult {
+  PlanStatus status = PlanStatus::kInvalidInput;
+  std::string error;               // one line, empty on success
+  Algorithm algorithm = Algorithm::kEaci;
+  CellPath path;                   // start first, goal last
+  double length = std::numeric_limits<double>::infinity();  // cells
+  double total_turn_deg = 0.0;
+  int iterations_to_converge = 0;  // iteration that first reached the final length (0 for A*)
+  int iterations_run = 0;
+  bool stopped_early = false;
+  bool interrupted = false;
+  long long lost_ants_total = 0;
+  std::vector<int> lost_ants_per_iteration;
+  std::vector<double> iteration_best_length;  // +infinity where no ant arrived
+  std::vector<double> best_length_so_far;
+  std::vector<Cell> islands;       // EACI: S, islands, E; ACO and A*: S, E
+  std::vector<double> pheromone;   // per cell, row-major, if requested
+
+  bool success() const { return status == PlanStatus::kSuccess; }
+};
+
+namespace detail {
+
+inline std::string describe(Cell c) {
+  std::ostringstream s;
+  s << "(row " << c.row << ", col " << c.col << ")";
+  return s.str();
+}
+
+inline PlanResult failure(Algorithm algorithm, PlanStatus status, const std::string& error) {
+  PlanResult r;
+  r.algorithm = algorithm;
+  r.status = status;
+  r.error = error;
+  return r;
+}
+
+// "" when start and goal are usable on this grid, else the reason.
+inline std::string endpointError(const BinaryGrid& grid, Cell c, const char* name) {
+  std::ostringstream e;
+  if (!grid.contains(c))
+    e << name << " " << describe(c) << " is off the map (" << grid.height() << " rows x " << grid.width() << " columns)";
+  else if (grid.isBlocked(c))
+    e << name << " " << describe(c) << " is in an obstacle";
+  return e.str();
+}
+
+inline void fillFromColony(const BinaryGrid& grid, const ColonyResult& colony, const PlanOptions& options,
+                           PlanResult& r) {
+  r.islands = colony.waypoints;
+  r.iterations_run = colony.run.iterations_run;
+  r.iterations_to_converge = colony.run.best_iteration;
+  r.stopped_early = colony.run.stopped_early;
+  r.interrupted = colony.run.interrupted;
+  r.lost_ants_per_iteration = colony.run.lost_ants_per_iteration;
+  for (int lost : r.lost_ants_per_iteration) r.lost_ants_total += lost;
+  r.iteration_best_length = colony.run.iteration_best_length;
+  r.best_length_so_far = colony.run.best_length_so_far;
+  for (std::uint32_t index : colony.run.best_cells) r.path.push_back(grid.cellAt(index));
+  if (options.record_pheromone) {
+    r.pheromone.resize(grid.cellCount());
+    for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) r.pheromone[cell] = colony.pheromone.strongestFrom(cell);
+  }
+}
+
+}  // namespace detail
+
+inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
+                       const PlanOptions& options = {}) {
+  using detail::failure;
+  const std::string parameter_error = validationError(params);
+  if (!parameter_error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, "invalid parameter: " + parameter_error);
+  if (grid.cellCount() == 0) return failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
+  for (const auto& [cell, name] : {std::pair<Cell, const char*>{start, "start"}, {goal, "goal"}}) {
+    const std::string error = detail::endpointError(grid, cell, name);
+    if (!error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, error);
+  }
+  if (algorithm != Algorithm::kAStar && grid.cellCount() > kMaxPheromoneBytes / kPheromoneBytesPerCell) {
+    std::ostringstream e;
+    e << "map of " << grid.width() << " x " << grid.height() << " cells needs "
+      << grid.cellCount() * kPheromoneBytesPerCell / (1 << 20) << " MiB of pheromone, over the cap of "
+      << kMaxPheromoneBytes / (1 << 20) << " MiB";
+    return failure(algorithm, PlanStatus::kInvalidInput, e.str());
+  }
+
+  PlanResult r;
+  r.algorithm = algorithm;
+  if (start == goal) {  // nothing to search: the route is the start cell itself
+    r.status = PlanStatus::kSuccess;
+    r.path = {start};
+    r.length = 0.0;
+    r.islands = {start};
+    return r;
+  }
+  if (algorithm == Algorithm::kAStar) {
+    const ShortestPath shortest = shortestPath(grid, start, goal);
+    r.path = shortest.path;
+    r.islands = {start, goal};
+  } else {
+    if (!reachableFrom(grid, start)[grid.index(goal)])
+      return failure(algorithm, PlanStatus::kNoPath,
+                     "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start));
+    const ColonyResult colony = algorithm == Algorithm::kEaci
+                                    ? solveEaci(grid, start, goal, params, options.should_stop, options.observer)
+                                    : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
+    detail::fillFromColony(grid, colony, options, r);
+  }
+  if (r.path.empty()) {
+    r.status = PlanStatus::kNoPath;
+    r.error = algorithm == Algorithm::kAStar
+                  ? "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start)
+                  : "no ant reached the goal in " + std::to_string(r.iterations_run) + " iterations";
+    return r;
+  }
+  r.status = PlanStatus::kSuccess;
+  r.length = pathLength(r.path);
+  r.total_turn_deg = totalTurnDegrees(r.path);
+  return r;
+}
+
+inline PlanResult plan(const GridView& view, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
+                       const PlanOptions& options = {}) {
+  if (view.empty()) return detail::failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
+  return plan(BinaryGrid::fromView(view, params.allow_corner_cutting), start, goal, algorithm, params, options);
+}
+
+}  // namespace eaci

@@ -1,0 +1,618 @@
+// Map readers: map_server YAML + image, PGM (own parser), other images (stb_image), 0/1 text.
+//
+// Every reader validates its input completely and reports the first problem as a
+// one-line MapLoadError naming the file; sizes are checked against kMaxMapCells and
+// kMaxMapFileBytes before anything large is allocated.
+#include "eaci/io/map_io.hpp"
+
+#include <stb_image.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+namespace eaci {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A map_server YAML file is a handful of lines; anything this large is not one.
+constexpr std::size_t kMaxYamlFileBytes = std::size_t{1} << 20;
+
+// ------------------------------------------------------------------ errors
+
+// Messages are one line, whatever the file names contain.
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
+[[noreturn]] void fail(const std::string& source, const std::string& reason) {
+  throw MapLoadError(oneLine(source + ": " + reason));
+}
+
+[[noreturn]] void failOpen(const std::string& path, const std::string& reason) {
+  throw MapLoadError(oneLine("cannot open " + path + ": " + reason));
+}
+
+// 'x' for a printable character, "byte 0x0a" for anything else.
+std::string describeByte(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  if (byte >= 0x20 && byte < 0x7f) return std::string("'") + c + "'";
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "byte 0x%02x", byte);
+  return hex;
+}
+
+std::string errnoMessage(int error) { return std::error_code(error, std::generic_category()).message(); }
+
+// ------------------------------------------------------------------ files
+
+// Refuses directories, FIFOs and devices up front: opening a FIFO could block and a
+// device such as /dev/zero never ends.
+void requireRegularFile(const std::string& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error) failOpen(path, error.message());
+  if (fs::is_directory(status)) failOpen(path, errnoMessage(EISDIR));
+  if (!fs::is_regular_file(status)) failOpen(path, "not a regular file");
+}
+
+std::string readFileBytes(const std::string& path, std::size_t max_bytes) {
+  requireRegularFile(path);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) failOpen(path, errnoMessage(errno));
+
+  std::string bytes;
+  char buffer[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
+    if (got > max_bytes - bytes.size()) {
+      fail(path, "file is larger than the limit of " + std::to_string(max_bytes) + " bytes");
+    }
+    bytes.append(buffer, got);
+  }
+  if (std::ferror(file.get())) failOpen(path, "read error");
+  return bytes;
+}
+
+bool hasYamlExtension(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".yaml" || extension == ".yml";
+}
+
+// ------------------------------------------------------------------ image sizes
+
+// width * height, refused (without overflowing) when it exceeds kMaxMapCells.
+std::size_t checkedCellCount(std::uint64_t width, std::uint64_t height, const std::string& source) {
+  if (width == 0 || height == 0) {
+    fail(source, "image of " + std::to_string(width) + " x " + std::to_string(height) + " pixels has no cells");
+  }
+  if (width > kMaxMapCells / height) {
+    fail(source, "image of " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels exceeds the limit of " + std::to_string(kMaxMapCells) + " cells");
+  }
+  return static_cast<std::size_t>(width * height);
+}
+
+// ------------------------------------------------------------------ PGM
+
+bool isPgmWhitespace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// 0..maxval -> 0..255, rounded to nearest.
+std::uint8_t scaleToByte(std::uint32_t value, std::uint32_t maxval) {
+  return static_cast<std::uint8_t>((value * 255u + maxval / 2u) / maxval);
+}
+
+struct PgmHeader {
+  bool binary = true;  // P5; false for P2
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t maxval = 0;
+};
+
+// Netpbm PGM (https://netpbm.sourceforge.net/doc/pgm.html): magic, width, height, maxval
+// separated by whitespace and '#' comments, then one whitespace character, then the raster.
+class PgmParser {
+ public:
+  PgmParser(const std::string& bytes, const std::string& source) : bytes_(bytes), source_(source) {}
+
+  GrayImage parse() {
+    const PgmHeader header = readHeader();
+    const std::size_t cells = checkedCellCount(header.width, header.height, source_);
+    GrayImage image;
+    image.width = static_cast<int>(header.width);
+    image.height = static_cast<int>(header.height);
+    image.pixels = header.binary ? readBinaryRaster(cells, header.maxval) : readAsciiRaster(cells, header.maxval);
+    return image;
+  }
+
+ private:
+  PgmHeader readHeader() {
+    PgmHeader header;
+    header.binary = readMagic();
+    header.width = static_cast<std::uint32_t>(readHeaderNumber("width", kMaxMapCells));
+    header.height = static_cast<std::uint32_t>(readHeaderNumber("height", kMaxMapCells));
+    header.maxval = static_cast<std::uint32_t>(readHeaderNumber("maxval", 65535));
+    if (header.width == 0 || header.height == 0) {
+      fail(source_, "PGM size " + std::to_string(header.width) + " x " + std::to_string(header.height) +
+                        " has no cells");
+    }
+    if (header.maxval == 0) fail(source_, "PGM maxval must be 1..65535, got 0");
+    skipWhitespaceAfterMaxval();
+    return header;
+  }
+
+  // True for P5, false for P2.
+  bool readMagic() {
+    if (bytes_.size() < 2 || bytes_[0] != 'P' || (bytes_[1] != '5' && bytes_[1] != '2')) {
+      fail(source_, "not a PGM file: the magic number must be P5 or P2");
+    }
+    pos_ = 2;
+    return bytes_[1] == '5';
+  }
+
+  // Whitespace and comments before a header number; at least one separator is required
+  // so that "P52" or "12#" followed by digits cannot run two tokens together.
+  void skipHeaderSeparators(const std::string& next_field) {
+    const std::size_t start = pos_;
+    while (pos_ < bytes_.size()) {
+      if (isPgmWhitespace(bytes_[pos_])) {
+        ++pos_;
+      } else if (bytes_[pos_] == '#') {
+        while (pos_ < bytes_.size() && bytes_[pos_] != '\n' && bytes_[pos_] != '\r') ++pos_;
+      } else {
+        break;
+      }
+    }
+    if (pos_ == bytes_.size()) fail(source_, "truncated PGM header: missing " + next_field);
+    if (pos_ == start) {
+      fail(source_, "PGM header: expected whitespace before " + next_field + ", found " + describeByte(bytes_[pos_]));
+    }
+  }
+
+  std::uint64_t readHeaderNumber(const std::string& field, std::uint64_t max_value) {
+    skipHeaderSeparators(field);
+    if (!isDigit(bytes_[pos_])) {
+      fail(source_, "PGM header: expected " + field + " (a non-negative integer), found " + describeByte(bytes_[pos_]));
+    }
+    std::uint64_t value = 0;
+    for (; pos_ < bytes_.size() && isDigit(bytes_[pos_]); ++pos_) {
+      value = value * 10 + static_cast<std::uint64_t>(bytes_[pos_] - '0');
+      if (value > max_value) fail(source_, "PGM " + field + " is larger than " + std::to_string(max_value));
+    }
+    return value;
+  }
+
+  void skipWhitespaceAfterMaxval() {
+    if (pos_ == bytes_.size()) fail(source_, "truncated PGM: missing whitespace and pixel data after maxval");
+    if (!isPgmWhitespace(bytes_[pos_])) {
+      fail(source_, "PGM header: expected whitespace after maxval, found " + describeByte(bytes_[pos_]));
+    }
+    ++pos_;
+  }
+
+  std::vector<std::uint8_t> readBinaryRaster(std::size_t cells, std::uint32_t maxval) {
+    const std::size_t bytes_per_pixel = maxval > 255 ? 2 : 1;
+    const std::size_t needed = cells * bytes_per_pixel;
+    const std::size_t available = bytes_.size() - pos_;
+    if (available < needed) {
+      fail(source_, "truncated PGM: expected " + std::to_string(needed) + " bytes of pixel data, found " +
+                        std::to_string(available));
+    }
+    std::vector<std::uint8_t> pixels(cells);
+    const auto* raster = reinterpret_cast<const unsigned char*>(bytes_.data() + pos_);
+    for (std::size_t i = 0; i < cells; ++i) {
+      const std::uint32_t value = bytes_per_pixel == 1
+                                      ? raster[i]
+                                      : (static_cast<std::uint32_t>(raster[2 * i]) << 8) | raster[2 * i + 1];
+      if (value > maxval) {
+        fail(source_, "PGM pixel " + std::to_string(i) + " has value " + std::to_string(value) + " above maxval " +
+                          std::to_string(maxval));
+      }
+      pixels[i] = scaleToByte(value, maxval);
+    }
+    return pixels;
+  }
+
+  std::vector<std::uint8_t> readAsciiRaster(std::size_t cells, std::uint32_t maxval) {
+    // Each value takes at least one digit and one separator: refuse short files before allocating.
+    const std::size_t available = bytes_.size() - pos_;
+    if (available < 2 * cells - 1) {
+      fail(source_, "truncated PGM: " + std::to_string(available) + " bytes cannot hold " + std::to_string(cells) +
+                        " pixel values");
+    }
+    std::vector<std::uint8_t> pixels(cells);
+    for (std::size_t i = 0; i < cells; ++i) pixels[i] = scaleToByte(readAsciiValue(i, cells, maxval), maxval);
+    return pixels;
+  }
+
+  std::uint32_t readAsciiValue(std::size_t index, std::size_t cells, std::uint32_t maxval) {
+    while (pos_ < bytes_.size() && isPgmWhitespace(bytes_[pos_])) ++pos_;
+    if (pos_ == bytes_.size()) {
+      fail(source_, "truncated PGM: found " + std::to_string(index) + " of " + std::to_string(cells) + " pixel values");
+    }
+    if (!isDigit(bytes_[pos_])) {
+      fail(source_, "PGM pixel " + std::to_string(index) + ": expected a number, found " + describeByte(bytes_[pos_]));
+    }
+    std::uint32_t value = 0;
+    for (; pos_ < bytes_.size() && isDigit(bytes_[pos_]); ++pos_) {
+      value = value * 10 + static_cast<std::uint32_t>(bytes_[pos_] - '0');
+      if (value > maxval) {
+        fail(source_, "PGM pixel " + std::to_string(index) + " has a value above maxval " + std::to_string(maxval));
+      }
+    }
+    if (pos_ < bytes_.size() && !isPgmWhitespace(bytes_[pos_])) {
+      fail(source_, "PGM pixel " + std::to_string(index) + ": unexpected " + describeByte(bytes_[pos_]) +
+                        " after the number");
+    }
+    return value;
+  }
+
+  const std::string& bytes_;
+  const std::string& source_;
+  std::size_t pos_ = 0;
+};
+
+// ------------------------------------------------------------------ other images (stb_image)
+
+bool startsWith(const std::string& bytes, const char* prefix, std::size_t length) {
+  return bytes.size() >= length && bytes.compare(0, length, prefix, length) == 0;
+}
+
+// Only formats with a real signature go to stb_image: its TGA reader, tried last, would
+// otherwise accept almost any bytes as an image. PPM and JPEG are left out on purpose: the
+// PNM and JPEG readers of the packaged stb_image (2022-09) crash on damaged files, and a
+// lossy JPEG makes a poor occupancy map anyway.
+bool hasStbImageSignature(const std::string& bytes) {
+  return startsWith(bytes, "\x89PNG\r\n\x1a\n", 8) || startsWith(bytes, "BM", 2) || startsWith(bytes, "GIF8", 4);
+}
+
+std::string stbFailureReason() {
+  const char* reason = stbi_failure_reason();
+  return std::string("cannot decode image: ") + (reason != nullptr ? reason : "unknown error");
+}
+
+// Colour images become grey with stb_image's luma weights (map_server takes the plain
+// mean of the channels; the difference only matters for coloured pixels near a threshold).
+// An alpha channel is dropped.
+GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source) {
+  if (!hasStbImageSignature(bytes)) {
+    fail(source, "unrecognised image format (supported: PGM P2/P5, PNG, BMP, GIF)");
+  }
+  if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(source, "image file too large");
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = static_cast<int>(bytes.size());
+
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_memory(data, length, &width, &height, &channels)) {
+    fail(source, stbFailureReason());
+  }
+  if (width <= 0 || height <= 0) fail(source, "image has no pixels");
+  const std::size_t cells = checkedCellCount(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height),
+                                             source);
+
+  stbi_set_flip_vertically_on_load_thread(0);  // row 0 must stay the top row
+  std::unique_ptr<stbi_uc, void (*)(void*)> decoded(
+      stbi_load_from_memory(data, length, &width, &height, &channels, 1), &stbi_image_free);
+  if (!decoded) fail(source, stbFailureReason());
+  if (static_cast<std::size_t>(width) * static_cast<std::size_t>(height) != cells) {
+    fail(source, "image size changed while decoding");
+  }
+
+  GrayImage image;
+  image.width = width;
+  image.height = height;
+  image.pixels.assign(decoded.get(), decoded.get() + cells);
+  return image;
+}
+
+// ------------------------------------------------------------------ 0/1 text matrix
+
+// One line of a matrix file -> its cells (empty for blank and comment lines).
+// Cells are '0' / '1'; spaces, tabs and CRs separate them or may be left out; a comma must
+// sit between two cells; '#' starts a comment.
+class MatrixLineParser {
+ public:
+  MatrixLineParser(const std::string& source, std::size_t line_number) : source_(source), line_(line_number) {}
+
+  std::vector<std::uint8_t> parse(const std::string& line) {
+    std::vector<std::uint8_t> row;
+    bool last_was_comma = false;
+    std::size_t comma_column = 0;
+    for (std::size_t i = 0; i < line.size() && line[i] != '#'; ++i) {
+      const char c = line[i];
+      const std::size_t column = i + 1;
+      if (c == ' ' || c == '\t' || c == '\r') continue;
+      if (c == ',') {
+        if (row.empty() || last_was_comma) failAt(column, "',' without a cell before it");
+        last_was_comma = true;
+        comma_column = column;
+      } else if (c == '0' || c == '1') {
+        if (row.size() == kMaxMapCells) failAt(column, "row longer than " + std::to_string(kMaxMapCells) + " cells");
+        row.push_back(c == '0' ? kFreeValue : kOccupiedValue);
+        last_was_comma = false;
+      } else {
+        failAt(column, "unexpected character " + describeByte(c) +
+                           " (cells must be 0 or 1, separated by spaces, tabs or commas)");
+      }
+    }
+    if (last_was_comma) failAt(comma_column, "',' without a cell after it");
+    return row;
+  }
+
+ private:
+  [[noreturn]] void failAt(std::size_t column, const std::string& reason) const {
+    fail(source_, "line " + std::to_string(line_) + ", column " + std::to_string(column) + ": " + reason);
+  }
+
+  const std::string& source_;
+  std::size_t line_;
+};
+
+// Appends rows while checking that they all have the same length and stay within kMaxMapCells.
+class MatrixBuilder {
+ public:
+  explicit MatrixBuilder(const std::string& source) : source_(source) {}
+
+  void addRow(const std::vector<std::uint8_t>& row, std::size_t line_number) {
+    if (rows_ == 0) {
+      width_ = row.size();
+      first_line_ = line_number;
+    } else if (row.size() != width_) {
+      fail(source_, "line " + std::to_string(line_number) + " has " + std::to_string(row.size()) +
+                        " cells, but line " + std::to_string(first_line_) + " has " + std::to_string(width_));
+    }
+    if (rows_ + 1 > kMaxMapCells / width_) {
+      fail(source_, "map exceeds the limit of " + std::to_string(kMaxMapCells) + " cells");
+    }
+    cells_.insert(cells_.end(), row.begin(), row.end());
+    ++rows_;
+  }
+
+  OccupancyMap build() {
+    if (rows_ == 0) fail(source_, "map has no cells");
+    OccupancyMap map;
+    map.width = static_cast<int>(width_);
+    map.height = static_cast<int>(rows_);
+    map.resolution = 1.0;
+    map.cells = std::move(cells_);
+    return map;
+  }
+
+ private:
+  const std::string& source_;
+  std::vector<std::uint8_t> cells_;
+  std::size_t width_ = 0;
+  std::size_t rows_ = 0;
+  std::size_t first_line_ = 0;
+};
+
+// ------------------------------------------------------------------ map_server YAML
+
+struct MapServerMetadata {
+  std::string image_path;  // resolved against the YAML file's directory
+  double resolution = 0.0;
+  std::array<double, 3> origin{};  // x, y, yaw
+  MapServerThresholds thresholds;
+};
+
+// Wraps yaml-cpp lookups and conversions so that every error names the file and the key.
+class YamlMapReader {
+ public:
+  YamlMapReader(const std::string& yaml_path, YAML::Node root) : path_(yaml_path), root_(std::move(root)) {}
+
+  MapServerMetadata read() const {
+    if (!root_.IsMap()) fail(path_, "expected a YAML mapping with the keys image, resolution and origin");
+    MapServerMetadata metadata;
+    metadata.image_path = readImagePath();
+    metadata.resolution = readPositiveNumber("resolution");
+    metadata.origin = readOrigin();
+    metadata.thresholds.negate = readNegate();
+    metadata.thresholds.occupied_thresh = readThreshold("occupied_thresh", 0.65);
+    metadata.thresholds.free_thresh = readThreshold("free_thresh", 0.196);
+    if (!(metadata.thresholds.free_thresh < metadata.thresholds.occupied_thresh)) {
+      fail(path_, "free_thresh (" + formatNumber(metadata.thresholds.free_thresh) +
+                      ") must be smaller than occupied_thresh (" +
+                      formatNumber(metadata.thresholds.occupied_thresh) + ")");
+    }
+    checkMode();
+    return metadata;
+  }
+
+ private:
+  static std::string formatNumber(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+  }
+
+  YAML::Node optionalKey(const std::string& key) const { return root_[key]; }
+
+  YAML::Node requiredKey(const std::string& key) const {
+    YAML::Node node = root_[key];
+    if (!node.IsDefined()) fail(path_, "missing key '" + key + "'");
+    return node;
+  }
+
+  [[noreturn]] void failKey(const std::string& key, const std::string& reason) const {
+    fail(path_, "key '" + key + "' " + reason);
+  }
+
+  std::string readScalar(const YAML::Node& node, const std::string& key, const std::string& expected) const {
+    if (!node.IsScalar()) failKey(key, "must be " + expected);
+    return node.Scalar();
+  }
+
+  double readNumber(const YAML::Node& node, const std::string& key) const {
+    const std::string text = readScalar(node, key, "a number");
+    double value = 0.0;
+    if (!YAML::convert<double>::decode(node, value)) failKey(key, "must be a number, got '" + text + "'");
+    if (!std::isfinite(value)) failKey(key, "must be finite, got '" + text + "'");
+    return value;
+  }
+
+  double readPositiveNumber(const std::string& key) const {
+    const double value = readNumber(requiredKey(key), key);
+    if (!(value > 0.0)) failKey(key, "must be positive, got " + formatNumber(value));
+    return value;
+  }
+
+  double readThreshold(const std::string& key, double default_value) const {
+    const YAML::Node node = optionalKey(key);
+    if (!node.IsDefined()) return default_value;
+    const double value = readNumber(node, key);
+    if (value < 0.0 || value > 1.0) failKey(key, "must be between 0 and 1, got " + formatNumber(value));
+    return value;
+  }
+
+  std::array<double, 3> readOrigin() const {
+    const YAML::Node node = requiredKey("origin");
+    if (!node.IsSequence() || node.size() != 3) failKey("origin", "must be a list of 3 numbers [x, y, yaw]");
+    std::array<double, 3> origin{};
+    for (std::size_t i = 0; i < origin.size(); ++i) origin[i] = readNumber(node[i], "origin");
+    return origin;
+  }
+
+  // map_server reads an int (0 / 1); nav2 also takes true / false.
+  bool readNegate() const {
+    const YAML::Node node = optionalKey("negate");
+    if (!node.IsDefined()) return false;
+    const std::string text = readScalar(node, "negate", "0, 1, true or false");
+    int as_int = 0;
+    if (YAML::convert<int>::decode(node, as_int) && (as_int == 0 || as_int == 1)) return as_int == 1;
+    bool as_bool = false;
+    if (YAML::convert<bool>::decode(node, as_bool)) return as_bool;
+    failKey("negate", "must be 0, 1, true or false, got '" + text + "'");
+  }
+
+  // All modes give the same map here: the planner only needs free / obstacle / unknown, so
+  // "scale" and "raw" are thresholded exactly like "trinary" (map_server would keep the
+  // intermediate occupancy values in those modes).
+  void checkMode() const {
+    const YAML::Node node = optionalKey("mode");
+    if (!node.IsDefined()) return;
+    const std::string mode = readScalar(node, "mode", "trinary, scale or raw");
+    if (mode != "trinary" && mode != "scale" && mode != "raw") {
+      failKey("mode", "must be trinary, scale or raw, got '" + mode + "'");
+    }
+  }
+
+  std::string readImagePath() const {
+    const std::string image = readScalar(requiredKey("image"), "image", "a file name");
+    if (image.empty()) failKey("image", "must not be empty");
+    const fs::path image_path(image);
+    if (image_path.is_absolute()) return image;
+    return (fs::path(path_).parent_path() / image_path).string();
+  }
+
+  const std::string& path_;
+  YAML::Node root_;
+};
+
+YAML::Node parseYamlDocument(const std::string& text, const std::string& yaml_path) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    fail(yaml_path, std::string("invalid YAML: ") + error.what());
+  }
+}
+
+MapServerMetadata readMapServerMetadata(const std::string& yaml_path) {
+  const std::string text = readFileBytes(yaml_path, kMaxYamlFileBytes);
+  const YAML::Node root = parseYamlDocument(text, yaml_path);
+  try {
+    return YamlMapReader(yaml_path, root).read();
+  } catch (const YAML::Exception& error) {
+    fail(yaml_path, std::string("invalid map description: ") + error.what());
+  }
+}
+
+GrayImage loadImageFile(const std::string& image_path, const std::string& yaml_path) {
+  try {
+    return decodeImage(readFileBytes(image_path, kMaxMapFileBytes), image_path);
+  } catch (const MapLoadError& error) {
+    fail(yaml_path, std::string("image: ") + error.what());
+  }
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ public interface
+
+GrayImage parsePgm(const std::string& bytes, const std::string& source_name) {
+  return PgmParser(bytes, source_name).parse();
+}
+
+GrayImage decodeImage(const std::string& bytes, const std::string& source_name) {
+  const bool is_pgm = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5');
+  return is_pgm ? parsePgm(bytes, source_name) : decodeWithStbImage(bytes, source_name);
+}
+
+std::vector<std::uint8_t> thresholdImage(const GrayImage& image, const MapServerThresholds& thresholds) {
+  std::vector<std::uint8_t> cells(image.pixels.size());
+  std::transform(image.pixels.begin(), image.pixels.end(), cells.begin(), [&thresholds](std::uint8_t value) {
+    const double occupancy = thresholds.negate ? value / 255.0 : (255 - value) / 255.0;
+    if (occupancy > thresholds.occupied_thresh) return kOccupiedValue;
+    if (occupancy < thresholds.free_thresh) return kFreeValue;
+    return kUnknownValue;
+  });
+  return cells;
+}
+
+OccupancyMap loadMapServerYaml(const std::string& yaml_path) {
+  const MapServerMetadata metadata = readMapServerMetadata(yaml_path);
+  const GrayImage image = loadImageFile(metadata.image_path, yaml_path);
+
+  OccupancyMap map;
+  map.width = image.width;
+  map.height = image.height;
+  map.resolution = metadata.resolution;
+  map.origin_x = metadata.origin[0];
+  map.origin_y = metadata.origin[1];
+  map.origin_yaw = metadata.origin[2];
+  map.cells = thresholdImage(image, metadata.thresholds);
+  return map;
+}
+
+OccupancyMap parseMatrixText(const std::string& text, const std::string& source_name) {
+  static const std::string kUtf8Bom = "\xEF\xBB\xBF";
+  MatrixBuilder builder(source_name);
+  std::size_t begin = text.compare(0, kUtf8Bom.size(), kUtf8Bom) == 0 ? kUtf8Bom.size() : 0;
+  for (std::size_t line_number = 1; begin <= text.size(); ++line_number) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    const std::vector<std::uint8_t> row =
+        MatrixLineParser(source_name, line_number).parse(text.substr(begin, end - begin));
+    if (!row.empty()) builder.addRow(row, line_number);
+    begin = end + 1;
+  }
+  return builder.build();
+}
+
+OccupancyMap loadMatrixText(const std::string& path) {
+  return parseMatrixText(readFileBytes(path, kMaxMapFileBytes), path);
+}
+
+OccupancyMap loadMap(const std::string& path) {
+  return hasYamlExtension(path) ? loadMapServerYaml(path) : loadMatrixText(path);
+}
+
+}  // namespace eaci

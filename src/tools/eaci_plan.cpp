@@ -1,0 +1,435 @@
+// eaci_plan: plan one route on a map with EACI, classic ACO or A*, print a summary, and
+// optionally write a JSON report and a PNG picture.
+//
+// Exit status: 0 path found, 3 no path, 2 bad input (arguments, map, parameters, start/goal).
+// Every failure prints one line "eaci_plan: error: <reason>" on stderr.
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "cli_args.hpp"
+#include "eaci/aco/auxiliary_map.hpp"
+#include "eaci/aco/parameters.hpp"
+#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cell_numbering.hpp"
+#include "eaci/io/map_io.hpp"
+#include "eaci/io/occupancy_map.hpp"
+#include "eaci/planner.hpp"
+#include "plan_image.hpp"
+#include "plan_json.hpp"
+
+namespace {
+
+constexpr int kExitPath = 0;
+constexpr int kExitBadInput = 2;
+constexpr int kExitNoPath = 3;
+constexpr const char* kErrorPrefix = "eaci_plan: error: ";
+
+// Bad input found by the CLI itself (exit 2).
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void onInterrupt(int) { g_interrupted = 1; }
+
+// Collapses a message to one line.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  bool space = false;
+  for (char ch : text) {
+    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+    if (ch == ' ' && (space || out.empty())) continue;
+    space = ch == ' ';
+    out += ch;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out.empty() ? "unknown error" : out;
+}
+
+void printError(const std::string& message) { std::cerr << kErrorPrefix << oneLine(message) << std::endl; }
+
+struct Options {
+  std::string map_path;
+  std::string start_rc, start_cell, start_xy;
+  std::string goal_rc, goal_cell, goal_xy;
+  std::string algorithm = "eaci";
+  std::string seed;
+  std::string params_file;
+  std::vector<std::string> sets;
+  std::string json_file;
+  std::string png_file;
+  std::string unknown = "obstacle";
+  bool quiet = false;
+};
+
+// A flat YAML mapping of parameter names to scalar values, applied on top of `p`.
+void applyParameterFile(eaci::Parameters& p, const std::string& file) {
+  const std::string where = "--params '" + file + "'";
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::BadFile&) {
+    throw InputError(where + ": cannot open the file");
+  } catch (const YAML::Exception& e) {
+    throw InputError(where + " is not valid YAML: " + e.what());
+  }
+  if (!root.IsMap()) {
+    const char* kind = root.IsNull() ? "an empty document" : root.IsSequence() ? "a list" : "a single value";
+    throw InputError(where + ": expected a mapping of parameter names to values, got " + kind);
+  }
+  for (const auto& entry : root) {
+    if (!entry.first.IsScalar()) throw InputError(where + ": parameter names must be plain words");
+    const std::string key = entry.first.Scalar();
+    if (entry.second.IsNull()) throw InputError(where + ": '" + key + "' has no value");
+    if (!entry.second.IsScalar())
+      throw InputError(where + ": '" + key + "' must be a single value, not a list or mapping (the file is flat)");
+    try {
+      eaci::setParameter(p, key, entry.second.Scalar());
+    } catch (const eaci::ParameterError& e) {
+      // YAML spells booleans in more ways (True, YES, ...) than setParameter accepts.
+      bool flag = false;
+      if (!YAML::convert<bool>::decode(entry.second, flag)) throw InputError(where + ": " + e.what());
+      try {
+        eaci::setParameter(p, key, flag ? "true" : "false");
+      } catch (const eaci::ParameterError&) {
+        throw InputError(where + ": " + e.what());
+      }
+    }
+  }
+}
+
+// Paper defaults, then --params, then each --set in order, then --seed; validated.
+void buildParameters(const Options& o, eaci::Parameters& p) {
+  if (!o.params_file.empty()) applyParameterFile(p, o.params_file);
+  for (const std::string& assignment : o.sets) {
+    std::pair<std::string, std::string> kv;
+    try {
+      kv = eaci::cli::splitAssignment(assignment, "--set");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
+    try {
+      eaci::setParameter(p, kv.first, kv.second);
+    } catch (const eaci::ParameterError& e) {
+      throw InputError(std::string("--set ") + assignment + ": " + e.what());
+    }
+  }
+  if (!o.seed.empty()) {
+    try {
+      eaci::setParameter(p, "seed", o.seed);
+    } catch (const eaci::ParameterError& e) {
+      throw InputError(std::string("--") + e.what());  // "--seed: 'x' is not an integer"
+    }
+  }
+  const std::string error = eaci::validationError(p);
+  if (!error.empty()) throw InputError("invalid parameter: " + error);
+}
+
+std::string formatNumber(double v, int precision = 4) {
+  std::ostringstream s;
+  s << std::setprecision(precision) << std::fixed << v;
+  std::string text = s.str();
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+// One of R,C / serial / X,Y (exactly one is set; checked before).
+eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc, const std::string& serial,
+                           const std::string& xy, const std::string& name) {
+  try {
+    if (!rc.empty()) return eaci::cli::parseRowCol(rc, "--" + name);
+    if (!serial.empty()) {
+      const std::int64_t g = eaci::cli::parseSerial(serial, "--" + name + "-cell");
+      const std::int64_t count = static_cast<std::int64_t>(map.width) * map.height;
+      if (g < 1 || g > count)
+        throw InputError("--" + name + "-cell " + std::to_string(g) + " is off the map: serial numbers run 1.." +
+                         std::to_string(count) + " on this " + std::to_string(map.width) + " x " +
+                         std::to_string(map.height) + " map");
+      return eaci::cellFromSerial(g, map.width);
+    }
+    const auto [x, y] = eaci::cli::parseXY(xy, "--" + name + "-xy");
+    const std::optional<eaci::Cell> cell = map.cellAtWorld(x, y);
+    if (!cell) {
+      const double x1 = map.origin_x + map.width * map.resolution, y1 = map.origin_y + map.height * map.resolution;
+      throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin_x) + " .. " +
+                       formatNumber(x1) + " m, y " + formatNumber(map.origin_y) + " .. " + formatNumber(y1) + " m)");
+    }
+    return *cell;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+}
+
+std::string describeCell(const eaci::OccupancyMap& map, eaci::Cell c) {
+  const eaci::Point2 p = map.worldAtCell(c);
+  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x) + ", " +
+         formatNumber(p.y) + ") m";
+}
+
+std::string upper(std::string s) {
+  for (char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return s;
+}
+
+std::string baseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// Free cells of the original map that EACI's auxiliary map (Eq. 12) blocks.
+std::vector<std::uint8_t> auxiliaryBlocked(const eaci::OccupancyMap& map, eaci::UnknownPolicy unknown,
+                                           const eaci::Parameters& params, eaci::Cell start, eaci::Cell goal) {
+  const eaci::BinaryGrid grid = eaci::BinaryGrid::fromView(map.view(unknown), params.allow_corner_cutting);
+  const eaci::BinaryGrid aux = eaci::auxiliaryMap(grid, start, goal);
+  std::vector<std::uint8_t> blocked(grid.cellCount(), 0);
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    const eaci::Cell c = grid.cellAt(i);
+    blocked[i] = aux.isBlocked(c) && !grid.isBlocked(c) ? 1 : 0;
+  }
+  return blocked;
+}
+
+std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanContext& context) {
+  std::ostringstream s;
+  s << (r.algorithm == eaci::Algorithm::kAStar ? std::string("A*") : upper(eaci::toString(r.algorithm))) << " on " << baseName(context.map_path);
+  if (r.success()) {
+    s << ": length " << formatNumber(r.length, 2) << " cells";
+    if (context.map && context.map->resolution != 1.0)
+      s << " (" << formatNumber(r.length * context.map->resolution, 2) << " m)";
+    s << ", turn " << formatNumber(r.total_turn_deg, 0) << " deg";
+    if (r.algorithm != eaci::Algorithm::kAStar)
+      s << "\nconverged at iteration " << r.iterations_to_converge << " of " << r.iterations_run << ", "
+        << r.lost_ants_total << " lost ants";
+    if (r.islands.size() > 2) s << ", " << r.islands.size() - 2 << " islands";
+    s << ", seed " << context.parameters.seed;
+  } else {
+    s << ": " << oneLine(r.error);
+  }
+  return s.str();
+}
+
+struct Outputs {
+  std::string json_error;
+  std::string png_error;
+};
+
+// Writes the JSON report and the picture where asked; errors are returned, not thrown.
+Outputs writeOutputs(const Options& o, const eaci::PlanResult& r, const eaci::tools::PlanContext& context,
+                     eaci::UnknownPolicy unknown, const eaci::Parameters& params) {
+  Outputs out;
+  if (!o.json_file.empty()) {
+    try {
+      eaci::tools::writePlanJson(o.json_file, r, context);
+    } catch (const std::exception& e) {
+      out.json_error = e.what();
+    }
+  }
+  if (!o.png_file.empty() && context.map) {
+    try {
+      eaci::tools::PlanDrawing drawing;
+      drawing.map = context.map;
+      drawing.unknown = unknown;
+      drawing.result = &r;
+      drawing.start = context.start;
+      drawing.goal = context.goal;
+      const auto on_free = [&](const std::optional<eaci::Cell>& c) {
+        return c && context.map->view(unknown).isFree(*c);
+      };
+      if (r.algorithm == eaci::Algorithm::kEaci && on_free(context.start) && on_free(context.goal))
+        drawing.auxiliary_blocked = auxiliaryBlocked(*context.map, unknown, params, *context.start, *context.goal);
+      drawing.caption = imageCaption(r, context);
+      eaci::tools::writePng(o.png_file, eaci::tools::renderPlan(drawing));
+    } catch (const std::exception& e) {
+      out.png_error = e.what();
+    }
+  } else if (!o.png_file.empty()) {
+    out.png_error = "cannot write PNG '" + o.png_file + "': no map";
+  }
+  return out;
+}
+
+void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools::PlanContext& context) {
+  const eaci::OccupancyMap& map = *context.map;
+  std::ostringstream s;
+  s << "algorithm:  " << eaci::toString(r.algorithm) << "\n";
+  s << "map:        " << context.map_path << " (" << map.width << " x " << map.height << " cells, "
+    << formatNumber(map.resolution) << " m/cell, unknown cells as " << context.unknown_policy << ")\n";
+  s << "start:      " << describeCell(map, *context.start) << "\n";
+  s << "goal:       " << describeCell(map, *context.goal) << "\n";
+  s << "length:     " << formatNumber(r.length) << " cells = " << formatNumber(r.length * map.resolution) << " m ("
+    << r.path.size() << " cells on the path)\n";
+  s << "turn:       " << formatNumber(r.total_turn_deg, 1) << " deg in total\n";
+  if (r.algorithm != eaci::Algorithm::kAStar) {
+    s << "iterations: converged at " << r.iterations_to_converge << " of " << r.iterations_run << " run";
+    if (r.stopped_early) s << " (stopped early)";
+    if (r.interrupted) s << " (interrupted)";
+    s << "\n";
+    s << "lost ants:  " << r.lost_ants_total << " in total\n";
+  }
+  const std::size_t inner = r.islands.size() >= 2 ? r.islands.size() - 2 : 0;
+  s << "islands:    " << inner << " between start and goal (" << r.islands.size() << " waypoints)\n";
+  s << "seed:       " << context.parameters.seed << "\n";
+  s << "time:       " << formatNumber(context.time_ms.value_or(0.0), context.time_ms.value_or(0.0) < 10 ? 3 : 1) << " ms\n";
+  if (!o.json_file.empty()) s << "json:       " << o.json_file << "\n";
+  if (!o.png_file.empty()) s << "png:        " << o.png_file << "\n";
+  std::cout << s.str() << std::flush;
+}
+
+int run(int argc, char** argv) {
+  Options o;
+  CLI::App app{"Plan a route on an occupancy map with EACI (Li, Li & Cui 2025), classic ACO or A*.\n"
+               "Exit status: 0 path found, 3 no path, 2 bad input.",
+               "eaci_plan"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--map", o.map_path, "map: .yaml (map_server) or .txt (0/1 matrix, first line = top row)")
+      ->required();
+  auto* start_rc = app.add_option("--start", o.start_rc, "start cell ROW,COL (0-based, row 0 = top)");
+  auto* start_cell = app.add_option("--start-cell", o.start_cell, "start cell by the paper's serial number 1..W*H");
+  auto* start_xy = app.add_option("--start-xy", o.start_xy, "start point X,Y in map-frame metres");
+  auto* goal_rc = app.add_option("--goal", o.goal_rc, "goal cell ROW,COL (0-based, row 0 = top)");
+  auto* goal_cell = app.add_option("--goal-cell", o.goal_cell, "goal cell by the paper's serial number 1..W*H");
+  auto* goal_xy = app.add_option("--goal-xy", o.goal_xy, "goal point X,Y in map-frame metres");
+  for (const auto& group : {std::vector<CLI::Option*>{start_rc, start_cell, start_xy},
+                      std::vector<CLI::Option*>{goal_rc, goal_cell, goal_xy}}) {
+    for (auto* a : group)
+      for (auto* b : group)
+        if (a != b) a->excludes(b);
+  }
+  app.add_option("--algorithm", o.algorithm, "eaci, aco (classic ant colony) or astar")
+      ->check(CLI::IsMember({"eaci", "aco", "astar"}));
+  app.add_option("--seed", o.seed, "random seed (overrides --params and --set)");
+  app.add_option("--params", o.params_file, "flat YAML mapping of parameter names to values");
+  app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
+      ->allow_extra_args(false);
+  app.add_option("--unknown", o.unknown, "how unknown map cells count: free or obstacle")
+      ->check(CLI::IsMember({"free", "obstacle"}));
+  app.add_option("--json", o.json_file, "write a JSON report here (also on failure)");
+  app.add_option("--png", o.png_file, "write a PNG picture of the map, pheromone, islands and path here");
+  app.add_flag("--quiet,-q", o.quiet, "print nothing on success");
+  app.footer("Parameters: " + [] {
+    std::string names;
+    for (const std::string& n : eaci::parameterNames()) names += (names.empty() ? "" : ", ") + n;
+    return names;
+  }());
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    printError(e.what());
+    return kExitBadInput;
+  }
+
+  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
+  eaci::parseAlgorithm(o.algorithm, algorithm);
+  const eaci::UnknownPolicy unknown = o.unknown == "free" ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+
+  std::optional<eaci::OccupancyMap> map;
+  eaci::tools::PlanContext context;
+  context.map_path = o.map_path;
+  context.unknown_policy = o.unknown;
+  eaci::Parameters params{};
+
+  // Any failure before plan(): report it in the JSON (as far as known) and exit 2.
+  auto fail = [&](const std::string& message) {
+    context.map = map ? &*map : nullptr;
+    context.parameters = params;
+    eaci::PlanResult failed;
+    failed.algorithm = algorithm;
+    failed.status = eaci::PlanStatus::kInvalidInput;
+    failed.error = oneLine(message);
+    writeOutputs(o, failed, context, unknown, params);
+    printError(message);
+    return kExitBadInput;
+  };
+
+  try {
+    const int starts = int(!o.start_rc.empty()) + int(!o.start_cell.empty()) + int(!o.start_xy.empty());
+    const int goals = int(!o.goal_rc.empty()) + int(!o.goal_cell.empty()) + int(!o.goal_xy.empty());
+    if (starts != 1) throw InputError("give the start once: --start ROW,COL, --start-cell N or --start-xy X,Y");
+    if (goals != 1) throw InputError("give the goal once: --goal ROW,COL, --goal-cell N or --goal-xy X,Y");
+    buildParameters(o, params);
+    map = eaci::loadMap(o.map_path);
+    context.map = &*map;
+    context.start = resolveEndpoint(*map, o.start_rc, o.start_cell, o.start_xy, "start");
+    context.goal = resolveEndpoint(*map, o.goal_rc, o.goal_cell, o.goal_xy, "goal");
+  } catch (const InputError& e) {
+    return fail(e.what());
+  } catch (const eaci::MapLoadError& e) {
+    return fail(e.what());
+  } catch (const eaci::ParameterError& e) {
+    return fail(std::string("invalid parameter: ") + e.what());
+  } catch (const YAML::Exception& e) {
+    return fail(e.what());
+  }
+  context.parameters = params;
+
+  eaci::PlanOptions options;
+  options.record_pheromone = !o.png_file.empty() && algorithm != eaci::Algorithm::kAStar;
+  options.should_stop = [](int) { return g_interrupted != 0; };
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  const auto t0 = std::chrono::steady_clock::now();
+  const eaci::PlanResult result = eaci::plan(map->view(unknown), *context.start, *context.goal, algorithm, params, options);
+  const auto t1 = std::chrono::steady_clock::now();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  context.time_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+
+  const Outputs written = writeOutputs(o, result, context, unknown, params);
+  if (!result.success()) {
+    printError(result.error.empty() ? "planning failed" : result.error);
+    return result.status == eaci::PlanStatus::kNoPath ? kExitNoPath : kExitBadInput;
+  }
+  if (!written.json_error.empty()) {
+    printError(written.json_error);
+    return kExitBadInput;
+  }
+  if (!written.png_error.empty()) {
+    printError(written.png_error);
+    return kExitBadInput;
+  }
+  if (!o.quiet) printSummary(o, result, context);
+  return kExitPath;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const eaci::MapLoadError& e) {
+    printError(e.what());
+  } catch (const eaci::ParameterError& e) {
+    printError(std::string("invalid parameter: ") + e.what());
+  } catch (const YAML::Exception& e) {
+    printError(e.what());
+  } catch (const std::bad_alloc&) {
+    printError("out of memory");
+  } catch (const std::exception& e) {
+    printError(e.what());
+  } catch (...) {
+    printError("unexpected failure");
+  }
+  return kExitBadInput;
+}

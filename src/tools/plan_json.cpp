@@ -1,0 +1,157 @@
+#include "plan_json.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+namespace eaci::tools {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json cellJson(Cell c) { return json::array({c.row, c.col}); }
+
+json optionalCellJson(const std::optional<Cell>& c) { return c ? cellJson(*c) : json(nullptr); }
+
+json lengthsJson(const std::vector<double>& lengths) {
+  json out = json::array();
+  for (double v : lengths) out.push_back(finiteOrNull(v));
+  return out;
+}
+
+const char* statusName(PlanStatus s) {
+  switch (s) {
+    case PlanStatus::kSuccess: return "success";
+    case PlanStatus::kNoPath: return "no_path";
+    case PlanStatus::kInvalidInput: return "invalid_input";
+  }
+  return "?";
+}
+
+}  // namespace
+
+json parametersToJson(const Parameters& p) {
+  // Parameters has setters by name but no getters; keep this table in step with
+  // parameterSetters(). A name without a getter is still listed (as null).
+  const std::map<std::string, std::function<json()>> getters = {
+      {"ants", [&] { return json(p.ants); }},
+      {"max_iterations", [&] { return json(p.max_iterations); }},
+      {"alpha", [&] { return finiteOrNull(p.alpha); }},
+      {"beta", [&] { return finiteOrNull(p.beta); }},
+      {"q", [&] { return finiteOrNull(p.q); }},
+      {"kappa", [&] { return finiteOrNull(p.kappa); }},
+      {"islands", [&] { return json(p.islands); }},
+      {"lambda", [&] { return finiteOrNull(p.lambda); }},
+      {"epsilon", [&] { return finiteOrNull(p.epsilon); }},
+      {"aco_rho", [&] { return finiteOrNull(p.aco_rho); }},
+      {"aco_tau0", [&] { return finiteOrNull(p.aco_tau0); }},
+      {"allow_corner_cutting", [&] { return json(p.allow_corner_cutting); }},
+      {"island_strategy", [&] { return json(toString(p.island_strategy)); }},
+      {"early_stop_iterations", [&] { return json(p.early_stop_iterations); }},
+      {"seed", [&] { return json(p.seed); }},
+      {"threads", [&] { return json(p.threads); }},
+  };
+  json out = json::object();
+  for (const std::string& name : parameterNames()) {
+    const auto it = getters.find(name);
+    out[name] = it != getters.end() ? it->second() : json(nullptr);
+  }
+  return out;
+}
+
+json planToJson(const PlanResult& r, const PlanContext& context) {
+  const OccupancyMap* map = context.map;
+  json j;
+  j["success"] = r.success();
+  if (!r.success()) j["error"] = r.error.empty() ? std::string("failed") : r.error;
+  j["status"] = statusName(r.status);
+  j["algorithm"] = toString(r.algorithm);
+
+  const bool has_length = r.success() && std::isfinite(r.length);
+  j["length"] = has_length ? json(r.length) : json(nullptr);
+  j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
+
+  json path = json::array(), path_xy = json::array();
+  for (const Cell& c : r.path) {
+    path.push_back(cellJson(c));
+    if (map) {
+      const Point2 p = map->worldAtCell(c);
+      path_xy.push_back(json::array({p.x, p.y}));
+    }
+  }
+  j["path"] = std::move(path);
+  j["path_xy"] = std::move(path_xy);
+
+  j["iterations_to_converge"] = r.iterations_to_converge;
+  j["iterations_run"] = r.iterations_run;
+  j["stopped_early"] = r.stopped_early;
+  j["interrupted"] = r.interrupted;
+  j["lost_ants_total"] = r.lost_ants_total;
+  j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
+  j["best_length_per_iteration"] = lengthsJson(r.iteration_best_length);
+  j["best_length_so_far"] = lengthsJson(r.best_length_so_far);
+  j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
+
+  json islands = json::array();
+  for (const Cell& c : r.islands) islands.push_back(cellJson(c));
+  j["islands"] = std::move(islands);
+
+  j["time_ms"] = context.time_ms ? finiteOrNull(*context.time_ms) : json(nullptr);
+  j["seed"] = context.parameters.seed;
+
+  json m;
+  m["path"] = context.map_path;
+  if (map) {
+    m["width"] = map->width;
+    m["height"] = map->height;
+    m["resolution"] = map->resolution;
+    m["origin"] = json::array({map->origin_x, map->origin_y, map->origin_yaw});
+  } else {
+    m["width"] = m["height"] = m["resolution"] = m["origin"] = nullptr;
+  }
+  j["map"] = std::move(m);
+  j["unknown"] = context.unknown_policy;
+  j["start"] = optionalCellJson(context.start);
+  j["goal"] = optionalCellJson(context.goal);
+  if (map && context.start) {
+    const Point2 p = map->worldAtCell(*context.start);
+    j["start_xy"] = json::array({p.x, p.y});
+  } else {
+    j["start_xy"] = nullptr;
+  }
+  if (map && context.goal) {
+    const Point2 p = map->worldAtCell(*context.goal);
+    j["goal_xy"] = json::array({p.x, p.y});
+  } else {
+    j["goal_xy"] = nullptr;
+  }
+  j["parameters"] = parametersToJson(context.parameters);
+  return j;
+}
+
+void writePlanJson(const std::string& file, const PlanResult& result, const PlanContext& context) {
+  // One top-level key per line, each value compact (a path of [row, col] pairs stays
+  // readable). Invalid UTF-8 (e.g. in a file name) is replaced rather than thrown on.
+  const json report = planToJson(result, context);
+  std::string text = "{\n";
+  std::size_t k = 0;
+  for (const auto& item : report.items()) {
+    text += "  " + json(item.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ": " +
+            item.value().dump(-1, ' ', false, json::error_handler_t::replace) + (++k < report.size() ? ",\n" : "\n");
+  }
+  text += "}\n";
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write JSON '" + file + "': " + std::strerror(errno));
+  out << text;
+  out.flush();
+  if (!out) throw std::runtime_error("cannot write JSON '" + file + "': write failed");
+}
+
+}  // namespace eaci::tools

@@ -1,0 +1,41 @@
+// eaci_plan's JSON report: the plan result plus what it was planned on.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "eaci/aco/parameters.hpp"
+#include "eaci/grid/cell.hpp"
+#include "eaci/io/occupancy_map.hpp"
+#include "eaci/planner.hpp"
+
+namespace eaci::tools {
+
+// Everything the report needs besides the PlanResult. Fields that are not known yet
+// (the run failed before) stay empty and are written as null.
+struct PlanContext {
+  std::string map_path;
+  const OccupancyMap* map = nullptr;    // null when the map could not be loaded
+  std::string unknown_policy = "obstacle";
+  std::optional<Cell> start;
+  std::optional<Cell> goal;
+  Parameters parameters;                // as used (or as far as they were read)
+  std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
+};
+
+// All parameter values by name (the names of eaci::parameterNames()).
+nlohmann::ordered_json parametersToJson(const Parameters& parameters);
+
+// The report: success, error (only when failed), status, algorithm, length, length_m, path,
+// path_xy, iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
+// lost_ants_per_iteration, best_length_per_iteration, best_length_so_far (null where
+// infinite), total_turn_deg, islands (S, islands, E), time_ms, seed, map, unknown, start,
+// goal, parameters, in this order.
+nlohmann::ordered_json planToJson(const PlanResult& result, const PlanContext& context);
+
+// Writes planToJson() to `file`, indented. Throws std::runtime_error with a one-line reason.
+void writePlanJson(const std::string& file, const PlanResult& result, const PlanContext& context);
+
+}  // namespace eaci::tools

@@ -1,0 +1,456 @@
+// Runs the built eaci_plan binary (EACI_BINARY_DIR/bin/eaci_plan) and checks its exit status,
+// its one-line error messages, its JSON report and its PNG.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>  // header-only
+
+#include "eaci/aco/parameters.hpp"
+#include "eaci/io/map_io.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kBinary = EACI_BINARY_DIR "/bin/eaci_plan";
+constexpr const char* kPrefix = "eaci_plan: error: ";
+
+std::string mapsDir() {
+  if (const char* env = std::getenv("EACI_MAPS_DIR"); env && *env) return env;
+  return EACI_DEFAULT_MAPS_DIR;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char ch : s) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("eaci_cli_" + std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    if (!fs::exists(kBinary)) GTEST_SKIP() << "eaci_plan not built: " << kBinary;
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  fs::path tmp(const std::string& name) const { return dir_ / name; }
+
+  static std::string paperMap(const std::string& name) {
+    const std::string path = mapsDir() + "/" + name;
+    return path;
+  }
+
+  // Runs the CLI with `args` (already shell-quoted where needed).
+  CliRun run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = quote(kBinary) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+    const int status = std::system(command.c_str());
+    CliRun r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = readFile(out);
+    r.err = readFile(err);
+    return r;
+  }
+
+  // Runs with --json and returns the report (empty object if none was written).
+  json runJson(const std::string& args, CliRun* result = nullptr) const {
+    const fs::path report = dir_ / "report.json";
+    fs::remove(report);
+    const CliRun r = run(args + " --json " + quote(report.string()));
+    if (result) *result = r;
+    if (!fs::exists(report)) return json::object();
+    return json::parse(readFile(report));
+  }
+
+  // Expects exit 2 with exactly one line on stderr, "eaci_plan: error: ..."; returns the reason.
+  std::string expectBadInput(const std::string& args) const {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\nstderr: " << r.err;
+    EXPECT_EQ(r.err.rfind(kPrefix, 0), 0u) << "stderr: " << r.err;
+    EXPECT_FALSE(r.err.empty());
+    if (!r.err.empty()) {
+      EXPECT_EQ(r.err.back(), '\n');
+      EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
+    }
+    EXPECT_GT(r.err.size(), std::string(kPrefix).size() + 5) << "no reason given";
+    return r.err;
+  }
+
+  void requireMap(const std::string& path) {
+    if (!fs::exists(path)) GTEST_SKIP() << "map not found: " << path;
+  }
+
+  fs::path dir_;
+};
+
+bool neighbours(const json& a, const json& b) {
+  const int dr = std::abs(a[0].get<int>() - b[0].get<int>()), dc = std::abs(a[1].get<int>() - b[1].get<int>());
+  return std::max(dr, dc) == 1;
+}
+
+double recomputedLength(const json& path) {
+  double length = 0;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const bool diagonal = path[k][0] != path[k - 1][0] && path[k][1] != path[k - 1][1];
+    length += diagonal ? std::sqrt(2.0) : 1.0;
+  }
+  return length;
+}
+
+// A* lengths of ../shared/maps/README.md.
+struct AStarCase {
+  const char* map;
+  const char* start;
+  const char* goal;
+  bool corner_cutting;
+  double length;
+};
+
+TEST_F(CliTest, AStarReproducesPaperOptima) {
+  const AStarCase cases[] = {
+      {"paper-20x20.txt", "0,0", "19,19", true, 30.9706},
+      {"paper-20x20.txt", "0,0", "19,19", false, 33.3137},
+      {"paper-30x30.txt", "29,0", "0,29", true, 44.5269},
+      {"paper-40x40.txt", "0,0", "39,39", true, 58.0833},
+  };
+  for (const AStarCase& c : cases) {
+    SCOPED_TRACE(std::string(c.map) + (c.corner_cutting ? " corner cutting" : " no corner cutting"));
+    const std::string map = paperMap(c.map);
+    requireMap(map);
+    CliRun r;
+    const json j = runJson("--map " + quote(map) + " --start " + c.start + " --goal " + c.goal +
+                               " --algorithm astar --set allow_corner_cutting=" + (c.corner_cutting ? "true" : "false"),
+                           &r);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_TRUE(j.value("success", false));
+    EXPECT_EQ(j["algorithm"], "astar");
+    EXPECT_NEAR(j["length"].get<double>(), c.length, 1e-3);
+    EXPECT_NEAR(j["length_m"].get<double>(), c.length, 1e-3);  // resolution 1
+    EXPECT_NEAR(recomputedLength(j["path"]), c.length, 1e-3);
+    EXPECT_NE(r.out.find("astar"), std::string::npos) << r.out;
+  }
+}
+
+TEST_F(CliTest, NoPathExitsThree) {
+  const std::string map = paperMap("paper-40x40.txt");
+  requireMap(map);
+  for (const char* algorithm : {"astar", "eaci"}) {
+    SCOPED_TRACE(algorithm);
+    CliRun r;
+    const json j = runJson("--map " + quote(map) + " --start 0,0 --goal 39,39 --algorithm " + algorithm +
+                               " --set allow_corner_cutting=false --set max_iterations=5",
+                           &r);
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_EQ(r.err.rfind(kPrefix, 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+    EXPECT_EQ(j.value("success", true), false);
+    EXPECT_TRUE(j.contains("error") && j["error"].is_string() && !j["error"].get<std::string>().empty());
+    EXPECT_TRUE(j["length"].is_null());
+    EXPECT_EQ(j["algorithm"], algorithm);
+  }
+}
+
+TEST_F(CliTest, SerialNumbersEqualRowCol) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  const std::string common = "--map " + quote(map) + " --algorithm astar --set allow_corner_cutting=true";
+  CliRun a, b;
+  const json by_serial = runJson(common + " --start-cell 1 --goal-cell 400", &a);
+  const json by_cell = runJson(common + " --start 0,0 --goal 19,19", &b);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(by_serial["start"], json::array({0, 0}));
+  EXPECT_EQ(by_serial["goal"], json::array({19, 19}));
+  EXPECT_EQ(by_serial["path"], by_cell["path"]);
+  EXPECT_DOUBLE_EQ(by_serial["length"].get<double>(), by_cell["length"].get<double>());
+}
+
+TEST_F(CliTest, EaciReturnsAConnectedPath) {
+  const std::string map_file = paperMap("paper-20x20.txt");
+  requireMap(map_file);
+  CliRun r;
+  const json j = runJson("--map " + quote(map_file) + " --start 0,0 --goal 19,19 --set max_iterations=20 --seed 3", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(j["success"].get<bool>());
+  EXPECT_FALSE(j.contains("error"));
+  EXPECT_EQ(j["algorithm"], "eaci");
+  const json& path = j["path"];
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_EQ(path.front(), json::array({0, 0}));
+  EXPECT_EQ(path.back(), json::array({19, 19}));
+  const eaci::OccupancyMap map = eaci::loadMap(map_file);
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const int row = path[k][0], col = path[k][1];
+    EXPECT_EQ(map.cells[static_cast<std::size_t>(row) * map.width + col], eaci::kFreeValue) << "cell " << k;
+    if (k > 0) {
+      EXPECT_TRUE(neighbours(path[k - 1], path[k])) << "step " << k;
+    }
+  }
+  EXPECT_NEAR(j["length"].get<double>(), recomputedLength(path), 1e-9);
+  EXPECT_GE(j["length"].get<double>(), 33.3137 - 1e-3);  // never shorter than the optimum
+  ASSERT_EQ(j["path_xy"].size(), path.size());
+  EXPECT_DOUBLE_EQ(j["path_xy"][0][0].get<double>(), 0.5);   // centre of (0, 0) on a 20-row map
+  EXPECT_DOUBLE_EQ(j["path_xy"][0][1].get<double>(), 19.5);
+
+  // The report's bookkeeping.
+  EXPECT_EQ(j["iterations_run"], 20);
+  EXPECT_EQ(j["seed"], 3);
+  EXPECT_EQ(j["parameters"]["seed"], 3);
+  EXPECT_EQ(j["parameters"]["max_iterations"], 20);
+  EXPECT_EQ(j["lost_ants_per_iteration"].size(), 20u);
+  EXPECT_EQ(j["best_length_per_iteration"].size(), 20u);
+  EXPECT_EQ(j["best_length_so_far"].size(), 20u);
+  long long lost = 0;
+  for (const auto& v : j["lost_ants_per_iteration"]) lost += v.get<long long>();
+  EXPECT_EQ(j["lost_ants_total"].get<long long>(), lost);
+  EXPECT_GE(j["iterations_to_converge"].get<int>(), 1);
+  EXPECT_LE(j["iterations_to_converge"].get<int>(), 20);
+  EXPECT_NEAR(j["best_length_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);
+  for (const auto& v : j["best_length_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
+  ASSERT_GE(j["islands"].size(), 2u);
+  EXPECT_EQ(j["islands"].front(), json::array({0, 0}));
+  EXPECT_EQ(j["islands"].back(), json::array({19, 19}));
+  EXPECT_TRUE(j["total_turn_deg"].is_number());
+  EXPECT_TRUE(j["time_ms"].is_number());
+  EXPECT_EQ(j["map"]["width"], 20);
+  EXPECT_EQ(j["map"]["height"], 20);
+  EXPECT_DOUBLE_EQ(j["map"]["resolution"].get<double>(), 1.0);
+  EXPECT_EQ(j["start"], json::array({0, 0}));
+  EXPECT_EQ(j["goal"], json::array({19, 19}));
+  for (const std::string& name : eaci::parameterNames())
+    EXPECT_TRUE(j["parameters"].contains(name) && !j["parameters"][name].is_null()) << name;
+}
+
+TEST_F(CliTest, SameSeedSameRoute) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  const std::string args = "--map " + quote(map) + " --start 0,0 --goal 19,19 --set max_iterations=10 --set seed=5 --seed 9";
+  CliRun a, b;
+  const json first = runJson(args, &a);
+  const json second = runJson(args, &b);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(first["seed"], 9);  // --seed wins over --set seed
+  EXPECT_EQ(first["path"], second["path"]);
+  EXPECT_EQ(first["lost_ants_per_iteration"], second["lost_ants_per_iteration"]);
+}
+
+TEST_F(CliTest, ClassicAcoFindsAPath) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  CliRun r;
+  const json j = runJson("--map " + quote(map) + " --start 0,0 --goal 19,19 --algorithm aco --set max_iterations=20 "
+                         "--set allow_corner_cutting=true",
+                         &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["algorithm"], "aco");
+  EXPECT_EQ(j["path"].front(), json::array({0, 0}));
+  EXPECT_EQ(j["path"].back(), json::array({19, 19}));
+  EXPECT_GE(j["length"].get<double>(), 30.9706 - 1e-3);
+}
+
+TEST_F(CliTest, ParamsFileThenSetThenSeed) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  writeFile(tmp("params.yaml"), "# tuned\nants: 7\nmax_iterations: 4\nallow_corner_cutting: true\nseed: 11\n");
+  CliRun r;
+  json j = runJson("--map " + quote(map) + " --start 0,0 --goal 19,19 --params " + quote(tmp("params.yaml").string()), &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["parameters"]["ants"], 7);
+  EXPECT_EQ(j["parameters"]["max_iterations"], 4);
+  EXPECT_EQ(j["parameters"]["allow_corner_cutting"], true);
+  EXPECT_EQ(j["iterations_run"], 4);
+  EXPECT_EQ(j["seed"], 11);
+  j = runJson("--map " + quote(map) + " --start 0,0 --goal 19,19 --params " + quote(tmp("params.yaml").string()) +
+                  " --set ants=6 --set ants=5 --seed 12",
+              &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["parameters"]["ants"], 5);  // the last --set wins
+  EXPECT_EQ(j["parameters"]["max_iterations"], 4);
+  EXPECT_EQ(j["seed"], 12);
+}
+
+TEST_F(CliTest, BadInputExitsTwoWithOneLine) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  const std::string m = "--map " + quote(map);
+  const std::string ok = m + " --start 0,0 --goal 19,19";
+  EXPECT_NE(expectBadInput("--map " + quote(tmp("missing.txt").string()) + " --start 0,0 --goal 1,1").find("missing.txt"),
+            std::string::npos);
+  EXPECT_NE(expectBadInput(m + " --start 0,6 --goal 19,19").find("obstacle"), std::string::npos);
+  EXPECT_NE(expectBadInput(m + " --start 20,0 --goal 19,19").find("off the map"), std::string::npos);
+  expectBadInput(m + " --start -1,0 --goal 19,19");
+  expectBadInput(m + " --start 0,0 --goal 19,19,4");
+  expectBadInput(m + " --start zero,0 --goal 19,19");
+  expectBadInput(m + " --start-cell 0 --goal-cell 400");
+  expectBadInput(m + " --start-cell 1 --goal-cell 401");
+  expectBadInput(m + " --start-xy 25,1 --goal 19,19");
+  EXPECT_NE(expectBadInput(ok + " --set nosuchkey=1").find("nosuchkey"), std::string::npos);
+  EXPECT_NE(expectBadInput(ok + " --set ants=0").find("ants"), std::string::npos);
+  EXPECT_NE(expectBadInput(ok + " --set alpha=nan").find("alpha"), std::string::npos);
+  expectBadInput(ok + " --set alpha=abc");
+  expectBadInput(ok + " --set alpha");
+  expectBadInput(ok + " --seed -3");
+  expectBadInput(m + " --start 0,0");                                 // no goal
+  expectBadInput(m + " --goal 19,19");                                // no start
+  expectBadInput(m + " --start 0,0 --start-cell 1 --goal 19,19");     // start twice
+  expectBadInput(m + " --start 0,0 --goal 19,19 --goal-xy 1,1");      // goal twice
+  expectBadInput("--start 0,0 --goal 19,19");                         // no map
+  expectBadInput(ok + " --algorithm dijkstra");
+  expectBadInput(ok + " --unknown maybe");
+  expectBadInput(ok + " --no-such-option");
+  expectBadInput(ok + " stray");
+}
+
+TEST_F(CliTest, BadParamsFilesExitTwo) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  const std::string ok = "--map " + quote(map) + " --start 0,0 --goal 19,19 --params ";
+  writeFile(tmp("unknown.yaml"), "ants: 10\nnot_a_parameter: 3\n");
+  EXPECT_NE(expectBadInput(ok + quote(tmp("unknown.yaml").string())).find("not_a_parameter"), std::string::npos);
+  writeFile(tmp("broken.yaml"), "ants: [1, 2\nbeta: {\n");
+  expectBadInput(ok + quote(tmp("broken.yaml").string()));
+  writeFile(tmp("scalar.yaml"), "just some words\n");
+  expectBadInput(ok + quote(tmp("scalar.yaml").string()));
+  writeFile(tmp("list.yaml"), "- ants\n- 10\n");
+  expectBadInput(ok + quote(tmp("list.yaml").string()));
+  writeFile(tmp("nested.yaml"), "eaci_planner:\n  ants: 10\n");
+  expectBadInput(ok + quote(tmp("nested.yaml").string()));
+  writeFile(tmp("badvalue.yaml"), "ants: many\n");
+  expectBadInput(ok + quote(tmp("badvalue.yaml").string()));
+  writeFile(tmp("invalid.yaml"), "kappa: 5\n");
+  expectBadInput(ok + quote(tmp("invalid.yaml").string()));
+  expectBadInput(ok + quote(tmp("does-not-exist.yaml").string()));
+}
+
+TEST_F(CliTest, JsonIsWrittenOnBadInput) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  CliRun r;
+  const json j = runJson("--map " + quote(map) + " --start 0,6 --goal 19,19 --algorithm aco", &r);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(j.value("success", true), false);
+  EXPECT_NE(j.value("error", std::string()).find("obstacle"), std::string::npos);
+  EXPECT_EQ(j["algorithm"], "aco");
+  EXPECT_TRUE(j["length"].is_null());
+}
+
+TEST_F(CliTest, HelpExitsZero) {
+  const CliRun r = run("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* option : {"--map", "--start-cell", "--goal-xy", "--params", "--set", "--json", "--png", "--unknown"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+TEST_F(CliTest, PngIsWritten) {
+  const std::string map = paperMap("paper-40x40.txt");
+  requireMap(map);
+  const fs::path png = tmp("plan.png");
+  const CliRun r = run("--map " + quote(map) + " --start 0,0 --goal 39,39 --set allow_corner_cutting=true "
+                    "--set max_iterations=10 --png " + quote(png.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(png.string()), std::string::npos) << r.out;
+  const std::string bytes = readFile(png);
+  ASSERT_GT(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(bytes[at])) << 24) | (std::uint32_t(std::uint8_t(bytes[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(bytes[at + 2])) << 8) | std::uint32_t(std::uint8_t(bytes[at + 3]));
+  };
+  EXPECT_GE(be32(16), 40u * 24u);  // IHDR width: 24 px per cell on a 40 x 40 map, plus margins
+  EXPECT_GE(be32(20), 40u * 24u);
+
+  // A* pictures too, and an unwritable PNG is bad input.
+  const CliRun astar = run("--map " + quote(map) + " --start 0,0 --goal 39,39 --set allow_corner_cutting=true "
+                        "--algorithm astar -q --png " + quote(tmp("astar.png").string()));
+  EXPECT_EQ(astar.exit_code, 0) << astar.err;
+  EXPECT_TRUE(astar.out.empty()) << "--quiet printed: " << astar.out;
+  EXPECT_TRUE(fs::exists(tmp("astar.png")));
+  expectBadInput("--map " + quote(map) + " --start 0,0 --goal 39,39 --set allow_corner_cutting=true "
+                 "--algorithm astar --png " + quote((dir_ / "no-such-dir" / "x.png").string()));
+}
+
+TEST_F(CliTest, StartXyOnYamlMap) {
+  // 10 x 10 free map, 0.5 m cells, origin (-1, -1): x and y run from -1 to 4 m.
+  std::string pgm = "P5\n10 10\n255\n";
+  pgm += std::string(100, static_cast<char>(254));
+  writeFile(tmp("small.pgm"), pgm);
+  writeFile(tmp("small.yaml"),
+            "image: small.pgm\nresolution: 0.5\norigin: [-1.0, -1.0, 0.0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const std::string m = "--map " + quote(tmp("small.yaml").string());
+  CliRun r;
+  const json j = runJson(m + " --start-xy -0.9,-0.9 --goal-xy 3.9,3.9 --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["start"], json::array({9, 0}));
+  EXPECT_EQ(j["goal"], json::array({0, 9}));
+  EXPECT_NEAR(j["length"].get<double>(), 9 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(j["length_m"].get<double>(), 4.5 * std::sqrt(2.0), 1e-9);
+  EXPECT_DOUBLE_EQ(j["path_xy"].front()[0].get<double>(), -0.75);
+  EXPECT_DOUBLE_EQ(j["path_xy"].front()[1].get<double>(), -0.75);
+  EXPECT_DOUBLE_EQ(j["path_xy"].back()[0].get<double>(), 3.75);
+  EXPECT_DOUBLE_EQ(j["path_xy"].back()[1].get<double>(), 3.75);
+  EXPECT_DOUBLE_EQ(j["map"]["resolution"].get<double>(), 0.5);
+
+  const json eaci = runJson(m + " --start-xy=-0.9,-0.9 --goal 0,9 --set max_iterations=10", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(eaci["path"].front(), json::array({9, 0}));
+
+  expectBadInput(m + " --start-xy -1.1,0 --goal 0,9");  // just off the left edge
+  expectBadInput(m + " --start-xy 0,4.0 --goal 0,9");   // the top edge belongs to no cell
+  expectBadInput(m + " --start-xy nan,0 --goal 0,9");
+  expectBadInput(m + " --start-xy 1 --goal 0,9");
+}
+
+TEST_F(CliTest, LabMapWithEaci) {
+  const std::string lab = std::string(EACI_SOURCE_DIR) + "/maps/lab.yaml";
+  if (!fs::exists(lab)) GTEST_SKIP() << "maps/lab.yaml does not exist yet";
+  CliRun r;
+  const json j = runJson("--map " + quote(lab) + " --start-xy 0.4,0.4 --goal-xy 4.4,2.6 --set max_iterations=30 --png " +
+                             quote(tmp("lab.png").string()),
+                         &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(j["success"].get<bool>());
+  EXPECT_EQ(j["start"], json::array({51, 8}));
+  EXPECT_EQ(j["goal"], json::array({7, 88}));
+  EXPECT_NEAR(j["length_m"].get<double>(), j["length"].get<double>() * 0.05, 1e-9);
+  EXPECT_TRUE(fs::exists(tmp("lab.png")));
+}
+
+}  // namespace

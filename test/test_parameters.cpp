@@ -1,0 +1,86 @@
+// The parameter struct: the paper's defaults, one validation, settable by name.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <limits>
+
+#include "eaci/aco/parameters.hpp"
+
+TEST(Parameters, DefaultsAreThePapers) {
+  const eaci::Parameters p;
+  EXPECT_EQ(p.ants, 50);
+  EXPECT_EQ(p.max_iterations, 100);
+  EXPECT_DOUBLE_EQ(p.alpha, 1.1);
+  EXPECT_DOUBLE_EQ(p.beta, 7.0);
+  EXPECT_DOUBLE_EQ(p.q, 100.0);
+  EXPECT_DOUBLE_EQ(p.kappa, 0.9);
+  EXPECT_EQ(p.islands, 9);
+  EXPECT_DOUBLE_EQ(p.lambda, 3.0);
+  EXPECT_DOUBLE_EQ(p.epsilon, 0.5);
+  EXPECT_FALSE(p.allow_corner_cutting);
+  EXPECT_EQ(eaci::validationError(p), "");
+}
+
+TEST(Parameters, EachBadValueGetsItsOwnReason) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    std::function<void(eaci::Parameters&)> spoil;
+    const char* mentions;
+  };
+  const std::vector<Case> cases = {
+      {[](auto& p) { p.ants = 0; }, "ants"},
+      {[](auto& p) { p.ants = -5; }, "ants"},
+      {[](auto& p) { p.max_iterations = 0; }, "max_iterations"},
+      {[&](auto& p) { p.alpha = nan; }, "alpha"},
+      {[](auto& p) { p.alpha = -1; }, "alpha"},
+      {[&](auto& p) { p.beta = inf; }, "beta"},
+      {[](auto& p) { p.q = 0; }, "q must"},
+      {[](auto& p) { p.kappa = 0; }, "kappa"},
+      {[](auto& p) { p.kappa = 1.5; }, "kappa"},
+      {[&](auto& p) { p.kappa = nan; }, "kappa"},
+      {[](auto& p) { p.islands = 1; }, "islands"},
+      {[](auto& p) { p.lambda = -3; }, "lambda"},
+      {[&](auto& p) { p.epsilon = nan; }, "epsilon"},
+      {[](auto& p) { p.aco_rho = 0; }, "aco_rho"},
+      {[](auto& p) { p.aco_rho = 1.5; }, "aco_rho"},
+      {[](auto& p) { p.early_stop_iterations = -1; }, "early_stop_iterations"},
+      {[](auto& p) { p.threads = -1; }, "threads"},
+  };
+  for (const auto& c : cases) {
+    eaci::Parameters p;
+    c.spoil(p);
+    const std::string error = eaci::validationError(p);
+    EXPECT_NE(error.find(c.mentions), std::string::npos) << "got: " << error;
+    EXPECT_THROW(eaci::validate(p), eaci::ParameterError);
+  }
+}
+
+TEST(Parameters, SetByName) {
+  eaci::Parameters p;
+  eaci::setParameter(p, "ants", "20");
+  eaci::setParameter(p, "alpha", "1.5");
+  eaci::setParameter(p, "allow_corner_cutting", "true");
+  eaci::setParameter(p, "island_strategy", "paper");
+  eaci::setParameter(p, "seed", "42");
+  EXPECT_EQ(p.ants, 20);
+  EXPECT_DOUBLE_EQ(p.alpha, 1.5);
+  EXPECT_TRUE(p.allow_corner_cutting);
+  EXPECT_EQ(p.seed, 42u);
+  EXPECT_EQ(eaci::parameterNames().size(), 16u);
+}
+
+TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {
+  eaci::Parameters p;
+  EXPECT_THROW(eaci::setParameter(p, "antz", "20"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "ants", "20.5"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "ants", ""), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "ants", "99999999999999999999"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "alpha", "1.1x"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "allow_corner_cutting", "maybe"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "island_strategy", "random"), eaci::ParameterError);
+  EXPECT_THROW(eaci::setParameter(p, "seed", "-1"), eaci::ParameterError);
+  // Parsed but out of range: validation's job.
+  eaci::setParameter(p, "alpha", "nan");
+  EXPECT_NE(eaci::validationError(p).find("alpha"), std::string::npos);
+}

@@ -1,0 +1,208 @@
+// One suite every algorithm must pass (after locusrobotics' global_planner_tests): small
+// maps with known answers, every input error, determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "eaci/planner.hpp"
+#include "test_support.hpp"
+
+using eaci::Algorithm;
+using eaci::BinaryGrid;
+using eaci::Cell;
+using eaci::PlanStatus;
+
+namespace {
+
+eaci::Parameters quickParameters() {
+  eaci::Parameters p;
+  p.max_iterations = 15;
+  p.ants = 20;
+  return p;
+}
+
+// 8 x 8 room with an L-shaped wall and a sealed 2 x 2 pocket in the bottom-right corner.
+BinaryGrid room(bool cutting) {
+  return BinaryGrid::fromRows({{0, 0, 0, 0, 0, 0, 0, 0},
+                               {0, 0, 0, 0, 0, 0, 0, 0},
+                               {0, 0, 1, 1, 1, 1, 0, 0},
+                               {0, 0, 0, 0, 0, 1, 0, 0},
+                               {0, 0, 0, 0, 0, 1, 0, 0},
+                               {0, 0, 0, 0, 0, 0, 1, 1},
+                               {0, 0, 0, 0, 0, 1, 0, 0},
+                               {0, 0, 0, 0, 0, 1, 0, 0}},
+                              cutting);
+}
+
+class PlannerSuite : public ::testing::TestWithParam<Algorithm> {};
+
+}  // namespace
+
+TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
+  const BinaryGrid grid = room(false);
+  const Cell pairs[][2] = {{{0, 0}, {7, 0}}, {{4, 4}, {0, 7}}, {{7, 4}, {0, 0}}, {{3, 3}, {4, 6}}};
+  for (const auto& pair : pairs) {
+    const auto r = eaci::plan(grid, pair[0], pair[1], GetParam(), quickParameters());
+    ASSERT_EQ(r.status, PlanStatus::kSuccess) << r.error;
+    EXPECT_EQ(eaci::test::routeDefect(grid, r.path, pair[0], pair[1]), "");
+    EXPECT_NEAR(r.length, eaci::test::countedLength(r.path), 1e-9);
+    const double optimum = eaci::shortestPath(grid, pair[0], pair[1]).length;
+    EXPECT_GE(r.length, optimum - 1e-9);
+  }
+}
+
+TEST_P(PlannerSuite, StraightCorridorGivesTheOnlyRoute) {
+  const BinaryGrid grid = BinaryGrid::fromRows({{1, 1, 1, 1, 1}, {0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}}, false);
+  const auto r = eaci::plan(grid, Cell{1, 0}, Cell{1, 4}, GetParam(), quickParameters());
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_DOUBLE_EQ(r.length, 4.0);
+  EXPECT_DOUBLE_EQ(r.total_turn_deg, 0.0);
+  if (GetParam() != Algorithm::kAStar) {
+    EXPECT_EQ(r.lost_ants_total, 0);
+    EXPECT_EQ(r.iterations_to_converge, 1);
+  }
+}
+
+TEST_P(PlannerSuite, StartEqualsGoalIsATrivialRoute) {
+  const auto r = eaci::plan(room(false), Cell{3, 3}, Cell{3, 3}, GetParam(), quickParameters());
+  ASSERT_TRUE(r.success());
+  EXPECT_EQ(r.path, (eaci::CellPath{{3, 3}}));
+  EXPECT_DOUBLE_EQ(r.length, 0.0);
+}
+
+TEST_P(PlannerSuite, GoalInASealedPocketHasNoPath) {
+  const auto r = eaci::plan(room(false), Cell{0, 0}, Cell{7, 7}, GetParam(), quickParameters());
+  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_NE(r.error.find("cannot be reached"), std::string::npos) << r.error;
+}
+
+TEST_P(PlannerSuite, DiagonalGapIsAPassageOnlyWithCornerCutting) {
+  // Obstacles touching at their corners split this map in two unless a diagonal may pass between them.
+  const std::vector<std::vector<int>> rows = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+  const auto strict = eaci::plan(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2}, GetParam(),
+                                 quickParameters());
+  EXPECT_EQ(strict.status, PlanStatus::kNoPath);
+  const auto cutting = eaci::plan(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2}, GetParam(),
+                                  quickParameters());
+  ASSERT_TRUE(cutting.success()) << cutting.error;
+  EXPECT_NEAR(cutting.length, 2.0 + std::sqrt(2.0), 1e-9);
+}
+
+TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
+  const BinaryGrid grid = room(false);
+  const auto params = quickParameters();
+  struct Case {
+    Cell start, goal;
+    const char* mentions;
+  };
+  for (const Case& c : {Case{{-1, 0}, {0, 7}, "start (row -1, col 0) is off the map"},
+                        Case{{0, 0}, {8, 0}, "goal (row 8, col 0) is off the map"},
+                        Case{{0, 0}, {0, 99}, "off the map"},
+                        Case{{2, 2}, {0, 7}, "start (row 2, col 2) is in an obstacle"},
+                        Case{{0, 0}, {5, 7}, "goal (row 5, col 7) is in an obstacle"}}) {
+    const auto r = eaci::plan(grid, c.start, c.goal, GetParam(), params);
+    EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
+    EXPECT_NE(r.error.find(c.mentions), std::string::npos) << r.error;
+    EXPECT_TRUE(r.path.empty());
+  }
+  const auto empty = eaci::plan(BinaryGrid(), Cell{0, 0}, Cell{0, 0}, GetParam(), params);
+  EXPECT_EQ(empty.status, PlanStatus::kInvalidInput);
+  EXPECT_NE(empty.error.find("no cells"), std::string::npos);
+  const auto empty_view = eaci::plan(eaci::GridView(), Cell{0, 0}, Cell{0, 0}, GetParam(), params);
+  EXPECT_EQ(empty_view.status, PlanStatus::kInvalidInput);
+  eaci::Parameters bad = params;
+  bad.ants = 0;
+  const auto invalid = eaci::plan(grid, Cell{0, 0}, Cell{0, 7}, GetParam(), bad);
+  EXPECT_EQ(invalid.status, PlanStatus::kInvalidInput);
+  EXPECT_NE(invalid.error.find("ants"), std::string::npos);
+}
+
+TEST_P(PlannerSuite, OneByOneMaps) {
+  const BinaryGrid free_cell = BinaryGrid::fromRows({{0}}, false);
+  EXPECT_TRUE(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 0}, GetParam(), quickParameters()).success());
+  EXPECT_EQ(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 1}, GetParam(), quickParameters()).status,
+            PlanStatus::kInvalidInput);
+  const BinaryGrid wall = BinaryGrid::fromRows({{1}}, false);
+  EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, GetParam(), quickParameters()).status, PlanStatus::kInvalidInput);
+}
+
+TEST_P(PlannerSuite, ReadsCostmapStyleBuffersBottomRowFirst) {
+  // costmap_2d layout: row 0 of the buffer is the bottom of the map, 254 lethal, 255 unknown.
+  const std::vector<std::uint8_t> buffer = {0, 0, 0,      // bottom
+                                            254, 254, 0,  // middle: wall with a gap on the right
+                                            0, 0, 255};   // top: unknown in the top-right
+  eaci::CellInterpretation costmap{253, 255, eaci::UnknownPolicy::kObstacle};
+  const eaci::GridView view(buffer.data(), 3, 3, eaci::RowOrder::kBottomFirst, costmap);
+  EXPECT_TRUE(view.isObstacle(Cell{0, 2}));   // top-right, unknown
+  EXPECT_TRUE(view.isObstacle(Cell{1, 0}));
+  EXPECT_FALSE(view.isObstacle(Cell{2, 0}));  // bottom-left
+  // Unknown as obstacle: the only way down, through the top-right corner, is closed.
+  EXPECT_EQ(eaci::plan(view, Cell{0, 0}, Cell{2, 0}, GetParam(), quickParameters()).status, PlanStatus::kNoPath);
+  // Unknown as free: right along the top, down the gap, back along the bottom.
+  costmap.unknown = eaci::UnknownPolicy::kFree;
+  const eaci::GridView optimistic(buffer.data(), 3, 3, eaci::RowOrder::kBottomFirst, costmap);
+  const auto r = eaci::plan(optimistic, Cell{0, 0}, Cell{2, 0}, GetParam(), quickParameters());
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_NEAR(r.length, 6.0, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, PlannerSuite,
+                         ::testing::Values(Algorithm::kEaci, Algorithm::kAco, Algorithm::kAStar),
+                         [](const auto& info) { return std::string(eaci::toString(info.param)); });
+
+TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
+  const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
+    eaci::Parameters p;
+    p.allow_corner_cutting = true;
+    p.max_iterations = 30;
+    p.seed = 7;
+    p.threads = 1;
+    const auto one = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    p.threads = 2;
+    const auto two = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    p.threads = 3;
+    const auto three = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    p.threads = 1;
+    const auto again = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    for (const auto* other : {&two, &three, &again}) {
+      EXPECT_EQ(one.path, other->path);
+      EXPECT_EQ(one.lost_ants_per_iteration, other->lost_ants_per_iteration);
+      EXPECT_EQ(one.iteration_best_length, other->iteration_best_length);
+    }
+    p.seed = 8;
+    const auto other_seed = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    EXPECT_NE(one.lost_ants_per_iteration, other_seed.lost_ants_per_iteration);
+  }
+}
+
+TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
+  // Never allocated: the check runs on the dimensions. A* has no pheromone and is not capped.
+  const std::size_t side = 5000;  // 25 M cells * 128 B = 3 GiB > 2 GiB
+  const BinaryGrid grid(static_cast<int>(side), static_cast<int>(side), false);
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 1}, Algorithm::kEaci, quickParameters());
+  EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
+  EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;
+}
+
+TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {
+  const BinaryGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
+  eaci::PlanOptions options;
+  options.should_stop = [](int done) { return done >= 3; };
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, eaci::Parameters{}, options);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(r.iterations_run, 3);
+}
+
+TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
+  const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  eaci::Parameters p;
+  p.allow_corner_cutting = true;
+  p.early_stop_iterations = 5;
+  const auto r = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, Algorithm::kEaci, p);
+  ASSERT_TRUE(r.success());
+  EXPECT_TRUE(r.stopped_early);
+  EXPECT_EQ(r.iterations_run, r.iterations_to_converge + 5);
+}

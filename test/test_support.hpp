@@ -1,0 +1,83 @@
+// Shared helpers of the test suite: where the paper maps are, and a path checker
+// written independently of the planner's own code.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "eaci/grid/binary_grid.hpp"
+#include "eaci/io/map_io.hpp"
+
+namespace eaci::test {
+
+inline std::string mapsDir() {
+  const char* env = std::getenv("EACI_MAPS_DIR");
+  return env != nullptr && *env != '\0' ? std::string(env) : std::string(EACI_DEFAULT_MAPS_DIR);
+}
+
+// A paper benchmark map (../shared/maps/<name>) as a BinaryGrid.
+inline BinaryGrid paperMap(const std::string& name, bool allow_corner_cutting) {
+  const OccupancyMap map = loadMatrixText(mapsDir() + "/" + name);
+  return BinaryGrid::fromView(map.view(), allow_corner_cutting);
+}
+
+// The paper maps with their start and goal cells and optima (shared/maps/README.md).
+struct PaperCase {
+  std::string file;
+  Cell start;
+  Cell goal;
+  double optimum_cutting;    // corner cutting allowed
+  double optimum_no_cutting; // forbidden; < 0: no path
+};
+
+inline const std::vector<PaperCase>& paperCases() {
+  static const std::vector<PaperCase> cases = {
+      {"paper-20x20.txt", {0, 0}, {19, 19}, 30.9706, 33.3137},
+      {"paper-30x30.txt", {29, 0}, {0, 29}, 44.5269, 48.0416},
+      {"paper-40x40.txt", {0, 0}, {39, 39}, 58.0833, -1.0},
+      {"paper-50x50.txt", {49, 0}, {0, 49}, 72.8112, 82.1838},
+  };
+  return cases;
+}
+
+// Checks the route properties every planner must give, from first principles:
+// starts at S, ends at E, consecutive cells 8-neighbours, every cell free, no cell
+// twice, no corner cut unless allowed. Returns "" or what is wrong.
+inline std::string routeDefect(const BinaryGrid& grid, const CellPath& path, Cell start, Cell goal) {
+  if (path.empty()) return "empty path";
+  if (!(path.front() == start)) return "does not start at S";
+  if (!(path.back() == goal)) return "does not end at E";
+  std::set<std::pair<int, int>> seen;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const Cell c = path[k];
+    if (c.row < 0 || c.col < 0 || c.row >= grid.height() || c.col >= grid.width()) return "leaves the map";
+    if (grid.isBlocked(c)) return "enters an obstacle at step " + std::to_string(k);
+    if (!seen.insert({c.row, c.col}).second) return "revisits a cell at step " + std::to_string(k);
+    if (k == 0) continue;
+    const int dr = c.row - path[k - 1].row, dc = c.col - path[k - 1].col;
+    if (std::abs(dr) > 1 || std::abs(dc) > 1 || (dr == 0 && dc == 0)) return "jumps at step " + std::to_string(k);
+    if (dr != 0 && dc != 0 && !grid.allowCornerCutting()) {
+      if (grid.isBlocked(Cell{path[k - 1].row + dr, path[k - 1].col}) ||
+          grid.isBlocked(Cell{path[k - 1].row, path[k - 1].col + dc}))
+        return "cuts a corner at step " + std::to_string(k);
+    }
+  }
+  return "";
+}
+
+// Length from first principles: count straight and diagonal steps.
+inline double countedLength(const CellPath& path) {
+  int straight = 0, diagonal = 0;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const bool diag = path[k].row != path[k - 1].row && path[k].col != path[k - 1].col;
+    (diag ? diagonal : straight)++;
+  }
+  return straight + diagonal * std::sqrt(2.0);
+}
+
+}  // namespace eaci::test
