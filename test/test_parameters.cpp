@@ -18,6 +18,7 @@ TEST(Parameters, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(p.lambda, 3.0);
   EXPECT_DOUBLE_EQ(p.epsilon, 0.5);
   EXPECT_FALSE(p.allow_corner_cutting);
+  EXPECT_EQ(p.island_strategy, eaci::IslandStrategy::kGeodesic);
   EXPECT_EQ(eaci::validationError(p), "");
 }
 

@@ -35,7 +35,22 @@ BinaryGrid room(bool cutting) {
                               cutting);
 }
 
-class PlannerSuite : public ::testing::TestWithParam<Algorithm> {};
+// Every planner: EACI with each island strategy, classic ACO, A*.
+struct Planner {
+  Algorithm algorithm;
+  eaci::IslandStrategy strategy;
+  const char* name;
+};
+
+class PlannerSuite : public ::testing::TestWithParam<Planner> {
+ protected:
+  Algorithm algorithm() const { return GetParam().algorithm; }
+  eaci::Parameters parameters() const {
+    eaci::Parameters p = quickParameters();
+    p.island_strategy = GetParam().strategy;
+    return p;
+  }
+};
 
 }  // namespace
 
@@ -43,7 +58,7 @@ TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
   const BinaryGrid grid = room(false);
   const Cell pairs[][2] = {{{0, 0}, {7, 0}}, {{4, 4}, {0, 7}}, {{7, 4}, {0, 0}}, {{3, 3}, {4, 6}}};
   for (const auto& pair : pairs) {
-    const auto r = eaci::plan(grid, pair[0], pair[1], GetParam(), quickParameters());
+    const auto r = eaci::plan(grid, pair[0], pair[1], algorithm(), parameters());
     ASSERT_EQ(r.status, PlanStatus::kSuccess) << r.error;
     EXPECT_EQ(eaci::test::routeDefect(grid, r.path, pair[0], pair[1]), "");
     EXPECT_NEAR(r.length, eaci::test::countedLength(r.path), 1e-9);
@@ -54,25 +69,25 @@ TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
 
 TEST_P(PlannerSuite, StraightCorridorGivesTheOnlyRoute) {
   const BinaryGrid grid = BinaryGrid::fromRows({{1, 1, 1, 1, 1}, {0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}}, false);
-  const auto r = eaci::plan(grid, Cell{1, 0}, Cell{1, 4}, GetParam(), quickParameters());
+  const auto r = eaci::plan(grid, Cell{1, 0}, Cell{1, 4}, algorithm(), parameters());
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_DOUBLE_EQ(r.length, 4.0);
   EXPECT_DOUBLE_EQ(r.total_turn_deg, 0.0);
-  if (GetParam() != Algorithm::kAStar) {
+  if (algorithm() != Algorithm::kAStar) {
     EXPECT_EQ(r.lost_ants_total, 0);
     EXPECT_EQ(r.iterations_to_converge, 1);
   }
 }
 
 TEST_P(PlannerSuite, StartEqualsGoalIsATrivialRoute) {
-  const auto r = eaci::plan(room(false), Cell{3, 3}, Cell{3, 3}, GetParam(), quickParameters());
+  const auto r = eaci::plan(room(false), Cell{3, 3}, Cell{3, 3}, algorithm(), parameters());
   ASSERT_TRUE(r.success());
   EXPECT_EQ(r.path, (eaci::CellPath{{3, 3}}));
   EXPECT_DOUBLE_EQ(r.length, 0.0);
 }
 
 TEST_P(PlannerSuite, GoalInASealedPocketHasNoPath) {
-  const auto r = eaci::plan(room(false), Cell{0, 0}, Cell{7, 7}, GetParam(), quickParameters());
+  const auto r = eaci::plan(room(false), Cell{0, 0}, Cell{7, 7}, algorithm(), parameters());
   EXPECT_EQ(r.status, PlanStatus::kNoPath);
   EXPECT_NE(r.error.find("cannot be reached"), std::string::npos) << r.error;
 }
@@ -80,18 +95,18 @@ TEST_P(PlannerSuite, GoalInASealedPocketHasNoPath) {
 TEST_P(PlannerSuite, DiagonalGapIsAPassageOnlyWithCornerCutting) {
   // Obstacles touching at their corners split this map in two unless a diagonal may pass between them.
   const std::vector<std::vector<int>> rows = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
-  const auto strict = eaci::plan(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2}, GetParam(),
-                                 quickParameters());
+  const auto strict = eaci::plan(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2}, algorithm(),
+                                 parameters());
   EXPECT_EQ(strict.status, PlanStatus::kNoPath);
-  const auto cutting = eaci::plan(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2}, GetParam(),
-                                  quickParameters());
+  const auto cutting = eaci::plan(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2}, algorithm(),
+                                  parameters());
   ASSERT_TRUE(cutting.success()) << cutting.error;
   EXPECT_NEAR(cutting.length, 2.0 + std::sqrt(2.0), 1e-9);
 }
 
 TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
   const BinaryGrid grid = room(false);
-  const auto params = quickParameters();
+  const auto params = parameters();
   struct Case {
     Cell start, goal;
     const char* mentions;
@@ -101,30 +116,30 @@ TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
                         Case{{0, 0}, {0, 99}, "off the map"},
                         Case{{2, 2}, {0, 7}, "start (row 2, col 2) is in an obstacle"},
                         Case{{0, 0}, {5, 7}, "goal (row 5, col 7) is in an obstacle"}}) {
-    const auto r = eaci::plan(grid, c.start, c.goal, GetParam(), params);
+    const auto r = eaci::plan(grid, c.start, c.goal, algorithm(), params);
     EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
     EXPECT_NE(r.error.find(c.mentions), std::string::npos) << r.error;
     EXPECT_TRUE(r.path.empty());
   }
-  const auto empty = eaci::plan(BinaryGrid(), Cell{0, 0}, Cell{0, 0}, GetParam(), params);
+  const auto empty = eaci::plan(BinaryGrid(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
   EXPECT_EQ(empty.status, PlanStatus::kInvalidInput);
   EXPECT_NE(empty.error.find("no cells"), std::string::npos);
-  const auto empty_view = eaci::plan(eaci::GridView(), Cell{0, 0}, Cell{0, 0}, GetParam(), params);
+  const auto empty_view = eaci::plan(eaci::GridView(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
   EXPECT_EQ(empty_view.status, PlanStatus::kInvalidInput);
   eaci::Parameters bad = params;
   bad.ants = 0;
-  const auto invalid = eaci::plan(grid, Cell{0, 0}, Cell{0, 7}, GetParam(), bad);
+  const auto invalid = eaci::plan(grid, Cell{0, 0}, Cell{0, 7}, algorithm(), bad);
   EXPECT_EQ(invalid.status, PlanStatus::kInvalidInput);
   EXPECT_NE(invalid.error.find("ants"), std::string::npos);
 }
 
 TEST_P(PlannerSuite, OneByOneMaps) {
   const BinaryGrid free_cell = BinaryGrid::fromRows({{0}}, false);
-  EXPECT_TRUE(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 0}, GetParam(), quickParameters()).success());
-  EXPECT_EQ(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 1}, GetParam(), quickParameters()).status,
+  EXPECT_TRUE(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).success());
+  EXPECT_EQ(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 1}, algorithm(), parameters()).status,
             PlanStatus::kInvalidInput);
   const BinaryGrid wall = BinaryGrid::fromRows({{1}}, false);
-  EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, GetParam(), quickParameters()).status, PlanStatus::kInvalidInput);
+  EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).status, PlanStatus::kInvalidInput);
 }
 
 TEST_P(PlannerSuite, ReadsCostmapStyleBuffersBottomRowFirst) {
@@ -138,23 +153,27 @@ TEST_P(PlannerSuite, ReadsCostmapStyleBuffersBottomRowFirst) {
   EXPECT_TRUE(view.isObstacle(Cell{1, 0}));
   EXPECT_FALSE(view.isObstacle(Cell{2, 0}));  // bottom-left
   // Unknown as obstacle: the only way down, through the top-right corner, is closed.
-  EXPECT_EQ(eaci::plan(view, Cell{0, 0}, Cell{2, 0}, GetParam(), quickParameters()).status, PlanStatus::kNoPath);
+  EXPECT_EQ(eaci::plan(view, Cell{0, 0}, Cell{2, 0}, algorithm(), parameters()).status, PlanStatus::kNoPath);
   // Unknown as free: right along the top, down the gap, back along the bottom.
   costmap.unknown = eaci::UnknownPolicy::kFree;
   const eaci::GridView optimistic(buffer.data(), 3, 3, eaci::RowOrder::kBottomFirst, costmap);
-  const auto r = eaci::plan(optimistic, Cell{0, 0}, Cell{2, 0}, GetParam(), quickParameters());
+  const auto r = eaci::plan(optimistic, Cell{0, 0}, Cell{2, 0}, algorithm(), parameters());
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_NEAR(r.length, 6.0, 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllAlgorithms, PlannerSuite,
-                         ::testing::Values(Algorithm::kEaci, Algorithm::kAco, Algorithm::kAStar),
-                         [](const auto& info) { return std::string(eaci::toString(info.param)); });
+INSTANTIATE_TEST_SUITE_P(AllPlanners, PlannerSuite,
+                         ::testing::Values(Planner{Algorithm::kEaci, eaci::IslandStrategy::kGeodesic, "eaci_geodesic"},
+                                           Planner{Algorithm::kEaci, eaci::IslandStrategy::kPaper, "eaci_paper"},
+                                           Planner{Algorithm::kAco, eaci::IslandStrategy::kGeodesic, "aco"},
+                                           Planner{Algorithm::kAStar, eaci::IslandStrategy::kGeodesic, "astar"}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
   const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
     eaci::Parameters p;
+    p.island_strategy = eaci::IslandStrategy::kPaper;  // more lost ants: differences would show
     p.allow_corner_cutting = true;
     p.max_iterations = 30;
     p.seed = 7;

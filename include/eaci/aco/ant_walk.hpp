@@ -10,6 +10,7 @@
 
 #include "eaci/aco/ant_route.hpp"
 #include "eaci/aco/heuristic.hpp"
+#include "eaci/aco/leg_distance_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/aco/random.hpp"
 #include "eaci/grid/binary_grid.hpp"
@@ -27,6 +28,9 @@ struct WalkSetup {
   const PheromoneField* pheromone = nullptr;
   std::vector<Cell> waypoints;                // L_1 = S, ..., L_N = E
   std::vector<std::int32_t> waypoint_of_cell;  // per grid cell: its index in `waypoints`, or -1
+  // d_jg of the heuristic: empty -> Euclidean distance to the leg's goal (the paper);
+  // else leg_distance[z] is the grid distance to waypoint z (geodesic islands).
+  std::vector<LegDistanceField> leg_distance;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   double beta = 7.0;
   double epsilon = 0.5;
@@ -73,7 +77,8 @@ class AntWalker {
           break;
         }
         if (waypoint >= 0) continue;  // another island: not on this leg
-        const double distance = std::hypot(next.row - goal.row, next.col - goal.col);
+        const double distance = setup.leg_distance.empty() ? std::hypot(next.row - goal.row, next.col - goal.col)
+                                                           : setup.leg_distance[target].at(next);
         const double eta = setup.heuristic == HeuristicRule::kGoalDistance
                                ? goalDistanceHeuristic(distance)
                                : turningAwareHeuristic(distance, turningCost(previous_dir, d, setup.epsilon));

@@ -18,7 +18,8 @@
 namespace eaci {
 
 enum class IslandStrategy {
-  kPaper,  // Eq. 13-15 on the auxiliary map, as the paper defines them
+  kGeodesic,  // on a shortest route, r_s apart, legs guided by exact grid distance (beyond the paper)
+  kPaper,     // Eq. 13-15 on the auxiliary map, as the paper defines them
 };
 
 struct Parameters {
@@ -34,7 +35,7 @@ struct Parameters {
   double aco_rho = 0.3;          // classic ACO evaporation rate (Eq. 10; the paper gives none)
   double aco_tau0 = 1.0;         // classic ACO uniform initial pheromone
   bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
-  IslandStrategy island_strategy = IslandStrategy::kPaper;
+  IslandStrategy island_strategy = IslandStrategy::kGeodesic;
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
@@ -73,6 +74,7 @@ inline void validate(const Parameters& p) {
 
 inline const char* toString(IslandStrategy s) {
   switch (s) {
+    case IslandStrategy::kGeodesic: return "geodesic";
     case IslandStrategy::kPaper: return "paper";
   }
   return "?";
@@ -134,8 +136,9 @@ inline const std::map<std::string, Setter>& parameterSetters() {
        [](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); }},
       {"island_strategy",
        [](Parameters& p, const std::string& v) {
-         if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
-         else throw ParameterError("island_strategy: '" + v + "' is not one of: paper");
+         if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;
+         else if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
+         else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
        }},
       {"early_stop_iterations",
        [](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); }},

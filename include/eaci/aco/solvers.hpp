@@ -3,13 +3,16 @@
 // eaci::plan() checks all of that before it calls them.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/aco/colony.hpp"
+#include "eaci/aco/geodesic_islands.hpp"
 #include "eaci/aco/initial_pheromone.hpp"
 #include "eaci/aco/islands.hpp"
 #include "eaci/grid/reachability.hpp"
+#include "eaci/search/astar.hpp"
 
 namespace eaci {
 
@@ -19,22 +22,35 @@ struct ColonyResult {
   PheromoneField pheromone;     // the field after the last iteration
 };
 
-// Islands for the chosen strategy (Eq. 12-15 for IslandStrategy::kPaper).
-inline std::vector<Cell> chooseIslands(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params) {
+struct IslandPlan {
+  std::vector<Cell> islands;                   // L_1 = S, ..., L_N = E
+  std::vector<LegDistanceField> leg_distance;  // empty: the paper's straight-line d_jg
+};
+
+// Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
+// kPaper: Eq. 13-15; kGeodesic: r_s apart on a shortest route, with exact leg distances.
+inline IslandPlan planIslands(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params) {
   const BinaryGrid aux = auxiliaryMap(grid, start, goal);
-  return paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands);
+  if (params.island_strategy == IslandStrategy::kPaper)
+    return {paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands), {}};
+  const CellPath route = descendDistanceField(grid, distanceField(grid, goal), start);
+  IslandPlan plan{geodesicIslands(aux, route, start, goal, params.islands), {}};
+  plan.leg_distance = legDistanceFields(grid, route, plan.islands);
+  return plan;
 }
 
-// Steps 1-7: auxiliary map and islands, non-uniform initial pheromone, ants walking leg by
+// Steps 1-7: auxiliary map and islands (by params.island_strategy), non-uniform initial pheromone, ants walking leg by
 // leg with the turning-aware heuristic, adaptive update.
 inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
   ColonyResult result;
-  result.waypoints = chooseIslands(grid, start, goal, params);
+  IslandPlan islands = planIslands(grid, start, goal, params);
+  result.waypoints = islands.islands;
   result.pheromone = initialIslandPheromone(grid, result.waypoints, params.lambda, params.alpha);
   if (observer) observer(0, result.pheromone);
-  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
-                        params.epsilon);
+  WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
+                  params.epsilon);
+  setup.leg_distance = std::move(islands.leg_distance);
   Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
   result.run = colony.run(should_stop, observer);
   return result;

@@ -1,0 +1,96 @@
+// Geodesic islands (beyond the paper): on a shortest route, r_s apart, with exact leg distances.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "eaci/aco/auxiliary_map.hpp"
+#include "eaci/aco/geodesic_islands.hpp"
+#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/search/astar.hpp"
+#include "test_support.hpp"
+
+using eaci::BinaryGrid;
+using eaci::Cell;
+using eaci::CellPath;
+
+namespace {
+BinaryGrid emptyGrid(int rows, int cols) {
+  return BinaryGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false);
+}
+}  // namespace
+
+TEST(GeodesicIslands, DescentFollowsAShortestRoute) {
+  for (const auto& pc : eaci::test::paperCases()) {
+    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, pc.goal), pc.start);
+    EXPECT_EQ(eaci::test::routeDefect(grid, route, pc.start, pc.goal), "") << pc.file;
+    EXPECT_NEAR(eaci::test::countedLength(route), pc.optimum_cutting, 1e-4) << pc.file;
+  }
+}
+
+TEST(GeodesicIslands, DescentFromAnUnreachableCellIsEmpty) {
+  const BinaryGrid grid = BinaryGrid::fromRows({{0, 1, 0}}, false);
+  EXPECT_TRUE(eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 2}), Cell{0, 0}).empty());
+}
+
+TEST(GeodesicIslands, SpacedRsApartAlongTheRoute) {
+  // Corridor of 10 cells, N = 4: r_s = 3, islands at 3 and 6, then E (3 further) is within r_s.
+  const BinaryGrid grid = emptyGrid(1, 10);
+  const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 9}), Cell{0, 0});
+  EXPECT_EQ(eaci::geodesicIslands(grid, route, Cell{0, 0}, Cell{0, 9}, 4),
+            (std::vector<Cell>{{0, 0}, {0, 3}, {0, 6}, {0, 9}}));
+}
+
+TEST(GeodesicIslands, SkipCellsTheAuxiliaryMapBlocks) {
+  // Same corridor, but the auxiliary map blocks (0,3): the island moves on to (0,4), the next
+  // one r_s after it to (0,7), and E is within r_s of (0,7).
+  const BinaryGrid grid = emptyGrid(1, 10);
+  BinaryGrid aux = grid;
+  aux.setBlocked(Cell{0, 3}, true);
+  const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 9}), Cell{0, 0});
+  EXPECT_EQ(eaci::geodesicIslands(aux, route, Cell{0, 0}, Cell{0, 9}, 4),
+            (std::vector<Cell>{{0, 0}, {0, 4}, {0, 7}, {0, 9}}));
+}
+
+TEST(GeodesicIslands, RouteThroughTheIslandsIsTheOptimum) {
+  for (const auto& pc : eaci::test::paperCases()) {
+    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, pc.goal), pc.start);
+    const auto islands =
+        eaci::geodesicIslands(eaci::auxiliaryMap(grid, pc.start, pc.goal), route, pc.start, pc.goal, 9);
+    ASSERT_GE(islands.size(), 3u);
+    double through = 0.0;
+    for (std::size_t k = 0; k + 1 < islands.size(); ++k)
+      through += eaci::shortestPath(grid, islands[k], islands[k + 1]).length;
+    EXPECT_NEAR(through, pc.optimum_cutting, 1e-4) << pc.file;
+  }
+}
+
+TEST(LegDistanceField, ExactInsideTheWindowAndNeverBetterOutside) {
+  // 12 x 12 open map with a wall; the island at (6,9), a leg from (6,2).
+  BinaryGrid grid = emptyGrid(12, 12);
+  for (int r = 3; r <= 9; ++r) grid.setBlocked(Cell{r, 6}, true);
+  const CellPath leg = {{6, 2}, {5, 3}, {4, 4}, {3, 5}, {2, 6}, {3, 7}, {4, 8}, {5, 9}, {6, 9}};
+  const eaci::LegDistanceField field(grid, leg, Cell{6, 9});
+  EXPECT_DOUBLE_EQ(field.at(Cell{6, 9}), 0.0);
+  EXPECT_NEAR(field.at(Cell{6, 8}), 1.0, 1e-12);
+  // The window is rows 0-10 (the leg's rows 2-6, margin 4), all columns: inside it the
+  // values are the exact grid distances, around the wall too.
+  for (Cell c : {Cell{6, 5}, Cell{9, 5}, Cell{2, 2}, Cell{10, 11}}) {
+    const double exact = eaci::shortestPath(grid, c, Cell{6, 9}).length;
+    EXPECT_NEAR(field.at(c), exact, 1e-9) << c.row << "," << c.col;
+  }
+  // Row 11 is outside: it reads as at least one more than anything inside.
+  EXPECT_GT(field.at(Cell{11, 11}), field.at(Cell{0, 0}));
+}
+
+TEST(LegDistanceField, CellsOutsideTheWindowReadAsFarAway) {
+  const BinaryGrid grid = emptyGrid(40, 40);
+  const CellPath leg = {{20, 20}, {20, 21}, {20, 22}};
+  const eaci::LegDistanceField field(grid, leg, Cell{20, 22});
+  // The window is the leg plus a margin of 4: (20, 30) lies outside it.
+  const double outside = field.at(Cell{20, 30});
+  EXPECT_GE(outside, 8.0);
+  EXPECT_GT(outside, field.at(Cell{20, 26}));  // the window's edge, 4 away
+  EXPECT_NEAR(field.at(Cell{20, 26}), 4.0, 1e-12);
+}
