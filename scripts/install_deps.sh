@@ -1,10 +1,19 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages eaci_planner builds with, when they are missing.
+# Installs the Debian 12 packages eaci_planner builds and tests with, when they are missing:
+# the core's, and ROS 1 Noetic from Debian's own packages for the ROS layer (skip those with
+# EACI_WITH_ROS=OFF). The navigation stack (nav_core, costmap_2d, move_base) is not packaged
+# in Debian: with it installed, the move_base plugin is built too.
 # Usage: scripts/install_deps.sh [extra-package ...]
 set -euo pipefail
 
 packages=(build-essential cmake pkg-config libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libstb-dev
-          libgtest-dev "$@")
+          libgtest-dev)
+if [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
+  packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev
+             libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev
+             rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools)
+fi
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

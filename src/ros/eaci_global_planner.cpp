@@ -1,0 +1,109 @@
+#include "eaci_global_planner.hpp"
+
+#include <costmap_2d/cost_values.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
+#include <pluginlib/class_list_macros.hpp>
+
+#include <mutex>
+
+#include "grid_conversion.hpp"
+#include "grid_planner.hpp"
+
+PLUGINLIB_EXPORT_CLASS(eaci_planner::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
+
+namespace eaci_planner {
+
+EaciGlobalPlanner::EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros) {
+  initialize(std::move(name), costmap_ros);
+}
+
+void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) {
+  if (initialized_) {
+    ROS_WARN("EaciGlobalPlanner %s: already initialised", name.c_str());
+    return;
+  }
+  name_ = name;
+  costmap_ros_ = costmap_ros;
+  ros::NodeHandle private_nh("~/" + name);
+  try {
+    eaci_ros::readParameters(private_nh, params_, options_);
+  } catch (const std::exception& e) {
+    ROS_ERROR("EaciGlobalPlanner %s: %s; using the defaults", name.c_str(), e.what());
+    params_ = eaci::Parameters{};
+    options_ = eaci_ros::RosPlannerOptions{};
+  }
+  plan_pub_ = private_nh.advertise<nav_msgs::Path>("plan", 1);
+  pheromone_pub_ = private_nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
+  make_plan_service_ = private_nh.advertiseService("make_plan", &EaciGlobalPlanner::onMakePlan, this);
+  initialized_ = true;
+  ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s",
+           name.c_str(), eaci::toString(options_.algorithm), params_.ants, params_.max_iterations, params_.islands,
+           eaci::toString(params_.island_strategy), options_.max_planning_time);
+}
+
+bool EaciGlobalPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                                 std::vector<geometry_msgs::PoseStamped>& plan) {
+  return planWithTolerance(start, goal, options_.default_tolerance, plan);
+}
+
+bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& start,
+                                          const geometry_msgs::PoseStamped& goal, double tolerance,
+                                          std::vector<geometry_msgs::PoseStamped>& plan) {
+  plan.clear();
+  if (!initialized_) {
+    ROS_ERROR("EaciGlobalPlanner: makePlan called before initialize()");
+    return false;
+  }
+  const std::string frame = costmap_ros_->getGlobalFrameID();
+  for (const auto* pose : {&start, &goal}) {
+    if (pose->header.frame_id != frame) {
+      ROS_ERROR("EaciGlobalPlanner %s: the %s is in frame '%s', the costmap in '%s'", name_.c_str(),
+                pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), frame.c_str());
+      return false;
+    }
+  }
+
+  costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
+  eaci_ros::GridPlan result;
+  eaci_ros::MapFrame map_frame;
+  {
+    std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
+    map_frame.frame_id = frame;
+    map_frame.origin_x = costmap->getOriginX();
+    map_frame.origin_y = costmap->getOriginY();
+    map_frame.resolution = costmap->getResolution();
+    map_frame.width = static_cast<int>(costmap->getSizeInCellsX());
+    map_frame.height = static_cast<int>(costmap->getSizeInCellsY());
+    eaci::CellInterpretation costs;
+    costs.obstacle_threshold = static_cast<std::uint8_t>(options_.obstacle_cost);
+    costs.unknown_value = costmap_2d::NO_INFORMATION;
+    costs.unknown = options_.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+    const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
+                              costs);
+    result = eaci_ros::planOnGrid(view, map_frame, start, goal, tolerance, params_, options_);
+  }
+  if (!result.ok) {
+    ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
+    return false;
+  }
+  plan = result.path.poses;
+  if (options_.publish_plan) plan_pub_.publish(result.path);
+  if (options_.visualize_pheromone && !result.result.pheromone.empty())
+    pheromone_pub_.publish(eaci_ros::fieldToGrid(result.result.pheromone, map_frame, ros::Time::now()));
+  return true;
+}
+
+bool EaciGlobalPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
+  const std::string frame = costmap_ros_ ? costmap_ros_->getGlobalFrameID() : std::string();
+  geometry_msgs::PoseStamped start = request.start, goal = request.goal;
+  if (start.header.frame_id.empty()) start.header.frame_id = frame;
+  if (goal.header.frame_id.empty()) goal.header.frame_id = frame;
+  const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
+  planWithTolerance(start, goal, tolerance, response.plan.poses);
+  response.plan.header.frame_id = frame;
+  response.plan.header.stamp = ros::Time::now();
+  return true;
+}
+
+}  // namespace eaci_planner

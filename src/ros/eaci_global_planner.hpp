@@ -1,0 +1,50 @@
+// eaci_planner/EaciGlobalPlanner: EACI as a nav_core::BaseGlobalPlanner for move_base.
+// A thin adapter: it views the costmap's char map through the core's grid view (no copy of
+// the costmap, under its mutex) and hands the request to planOnGrid().
+#pragma once
+
+#include <costmap_2d/costmap_2d_ros.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_core/base_global_planner.h>
+#include <nav_msgs/GetPlan.h>
+#include <ros/ros.h>
+
+#include <string>
+#include <vector>
+
+#include "eaci/aco/parameters.hpp"
+#include "ros_parameters.hpp"
+
+namespace eaci_planner {
+
+class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
+ public:
+  EaciGlobalPlanner() = default;
+  EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros);
+
+  // Reads the parameters under ~<name>/ (see ros_parameters.hpp), advertises ~<name>/plan,
+  // ~<name>/pheromone and the ~<name>/make_plan service.
+  void initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) override;
+
+  // false with a ROS_ERROR / ROS_WARN naming the reason: not initialised, a pose in another
+  // frame, start or goal off the costmap, in an obstacle (the goal beyond default_tolerance),
+  // or no route (within max_planning_time).
+  bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                std::vector<geometry_msgs::PoseStamped>& plan) override;
+
+ private:
+  bool planWithTolerance(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                         double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
+  bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
+
+  bool initialized_ = false;
+  std::string name_;
+  costmap_2d::Costmap2DROS* costmap_ros_ = nullptr;
+  eaci::Parameters params_;
+  eaci_ros::RosPlannerOptions options_;
+  ros::Publisher plan_pub_;
+  ros::Publisher pheromone_pub_;
+  ros::ServiceServer make_plan_service_;
+};
+
+}  // namespace eaci_planner

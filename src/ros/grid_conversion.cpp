@@ -1,0 +1,166 @@
+#include "grid_conversion.hpp"
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace eaci_ros {
+
+MapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
+  MapFrame f;
+  f.frame_id = grid.header.frame_id;
+  f.origin_x = grid.info.origin.position.x;
+  f.origin_y = grid.info.origin.position.y;
+  f.resolution = grid.info.resolution;
+  f.width = static_cast<int>(grid.info.width);
+  f.height = static_cast<int>(grid.info.height);
+  return f;
+}
+
+nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std::string& frame_id) {
+  nav_msgs::OccupancyGrid grid;
+  grid.header.frame_id = frame_id;
+  grid.info.resolution = static_cast<float>(map.resolution);
+  grid.info.width = static_cast<std::uint32_t>(map.width);
+  grid.info.height = static_cast<std::uint32_t>(map.height);
+  grid.info.origin.position.x = map.origin_x;
+  grid.info.origin.position.y = map.origin_y;
+  tf2::Quaternion q;
+  q.setRPY(0, 0, map.origin_yaw);
+  grid.info.origin.orientation = tf2::toMsg(q);
+  grid.data.resize(map.cells.size());
+  for (int row = 0; row < map.height; ++row) {
+    for (int col = 0; col < map.width; ++col) {
+      const std::uint8_t v = map.cells[static_cast<std::size_t>(row) * map.width + col];
+      const std::size_t out = static_cast<std::size_t>(map.height - 1 - row) * map.width + col;
+      grid.data[out] = v == eaci::kUnknownValue ? std::int8_t{-1} : static_cast<std::int8_t>(v);
+    }
+  }
+  return grid;
+}
+
+eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free) {
+  eaci::CellInterpretation interpretation;
+  interpretation.obstacle_threshold = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
+  interpretation.unknown_value = 255;  // int8 -1
+  interpretation.unknown = unknown_is_free ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+  const std::size_t cells = static_cast<std::size_t>(grid.info.width) * grid.info.height;
+  if (grid.data.size() != cells || cells == 0) return eaci::GridView();
+  return eaci::GridView(reinterpret_cast<const std::uint8_t*>(grid.data.data()), static_cast<int>(grid.info.width),
+                        static_cast<int>(grid.info.height), eaci::RowOrder::kBottomFirst, interpretation);
+}
+
+void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied_threshold) {
+  if (!(radius > 0) || !(grid.info.resolution > 0)) return;
+  const int w = static_cast<int>(grid.info.width), h = static_cast<int>(grid.info.height);
+  if (grid.data.size() != static_cast<std::size_t>(w) * h) return;
+  const double r = radius / grid.info.resolution;
+  const int reach = static_cast<int>(std::floor(r));
+  std::vector<std::pair<int, int>> disc;
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx)
+      if (std::hypot(dx, dy) <= r) disc.emplace_back(dx, dy);
+  const std::vector<std::int8_t> original = grid.data;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (original[static_cast<std::size_t>(y) * w + x] < occupied_threshold) continue;
+      for (const auto& [dx, dy] : disc) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx >= 0 && ny >= 0 && nx < w && ny < h) grid.data[static_cast<std::size_t>(ny) * w + nx] = 100;
+      }
+    }
+  }
+}
+
+std::optional<eaci::Cell> cellAt(const MapFrame& frame, double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !(frame.resolution > 0)) return std::nullopt;
+  const double col = std::floor((x - frame.origin_x) / frame.resolution);
+  const double row_from_bottom = std::floor((y - frame.origin_y) / frame.resolution);
+  if (col < 0 || row_from_bottom < 0 || col >= frame.width || row_from_bottom >= frame.height) return std::nullopt;
+  return eaci::Cell{frame.height - 1 - static_cast<int>(row_from_bottom), static_cast<int>(col)};
+}
+
+void cellCentre(const MapFrame& frame, eaci::Cell cell, double& x, double& y) {
+  x = frame.origin_x + (cell.col + 0.5) * frame.resolution;
+  y = frame.origin_y + (frame.height - 1 - cell.row + 0.5) * frame.resolution;
+}
+
+std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells) {
+  if (view.isFree(cell)) return cell;
+  const int reach = static_cast<int>(std::floor(std::max(0.0, radius_cells)));
+  std::optional<eaci::Cell> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int dr = -reach; dr <= reach; ++dr) {
+    for (int dc = -reach; dc <= reach; ++dc) {
+      const double distance = std::hypot(dr, dc);
+      const eaci::Cell candidate{cell.row + dr, cell.col + dc};
+      if (distance > radius_cells || distance >= best_distance || !view.isFree(candidate)) continue;
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
+                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp) {
+  nav_msgs::Path path;
+  path.header.frame_id = frame.frame_id;
+  path.header.stamp = stamp;
+  if (cells.empty()) return path;
+  std::vector<std::pair<double, double>> points;
+  points.reserve(cells.size());
+  for (const eaci::Cell& c : cells) {
+    double x, y;
+    cellCentre(frame, c, x, y);
+    points.emplace_back(x, y);
+  }
+  points.front() = {start.pose.position.x, start.pose.position.y};
+  if (cells.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    geometry_msgs::PoseStamped pose;
+    pose.header = path.header;
+    pose.pose.position.x = points[k].first;
+    pose.pose.position.y = points[k].second;
+    if (k + 1 < points.size()) {
+      tf2::Quaternion q;
+      q.setRPY(0, 0, std::atan2(points[k + 1].second - points[k].second, points[k + 1].first - points[k].first));
+      pose.pose.orientation = tf2::toMsg(q);
+    } else {
+      pose.pose.orientation = goal.pose.orientation;
+    }
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapFrame& frame, const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid grid;
+  grid.header.frame_id = frame.frame_id;
+  grid.header.stamp = stamp;
+  grid.info.resolution = static_cast<float>(frame.resolution);
+  grid.info.width = static_cast<std::uint32_t>(frame.width);
+  grid.info.height = static_cast<std::uint32_t>(frame.height);
+  grid.info.origin.position.x = frame.origin_x;
+  grid.info.origin.position.y = frame.origin_y;
+  grid.info.origin.orientation.w = 1.0;
+  grid.data.assign(field.size(), 0);
+  double low = std::numeric_limits<double>::infinity(), high = 0.0;
+  for (double v : field)
+    if (v > 0) low = std::min(low, v), high = std::max(high, v);
+  if (!(high > low)) return grid;
+  const double span = std::log(high / low);
+  for (int row = 0; row < frame.height; ++row) {
+    for (int col = 0; col < frame.width; ++col) {
+      const double v = field[static_cast<std::size_t>(row) * frame.width + col];
+      const std::size_t out = static_cast<std::size_t>(frame.height - 1 - row) * frame.width + col;  // bottom row first
+      grid.data[out] = v > 0 ? static_cast<std::int8_t>(std::lround(100.0 * std::log(v / low) / span)) : 0;
+    }
+  }
+  return grid;
+}
+
+}  // namespace eaci_ros

@@ -1,0 +1,61 @@
+// The one place that knows both worlds: ROS messages <-> the core's grid view, cells and paths.
+#pragma once
+
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eaci/grid/cell.hpp"
+#include "eaci/grid/grid_view.hpp"
+#include "eaci/io/occupancy_map.hpp"
+
+namespace eaci_ros {
+
+// Where a grid sits in the world: like costmap_2d and nav_msgs/OccupancyGrid, the origin is
+// the corner of the cell in the first buffer row (the bottom row) and first column; the
+// origin's rotation is ignored, as costmap_2d does.
+struct MapFrame {
+  std::string frame_id;
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+  double resolution = 1.0;
+  int width = 0;
+  int height = 0;
+};
+
+MapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
+
+// A map loaded by the core (row 0 = top) as the message map_server would publish (bottom row first).
+nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std::string& frame_id);
+
+// The grid's data viewed without a copy: int8 -1 (unknown) reads as the byte 255; cells at
+// or above `occupied_threshold` (0..100) are obstacles.
+eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free);
+
+// Marks every cell whose centre lies within `radius` metres of an occupied cell's centre as
+// occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles.
+void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied_threshold);
+
+// World point -> core cell (row 0 = top of the map); nothing when off the map.
+std::optional<eaci::Cell> cellAt(const MapFrame& frame, double x, double y);
+
+// Core cell -> world position of its centre.
+void cellCentre(const MapFrame& frame, eaci::Cell cell, double& x, double& y);
+
+// Nearest free cell to `cell` within `radius_cells` (Euclidean, in cells), `cell` itself if free.
+std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells);
+
+// The route as poses in the map frame: the start pose's position first, cell centres, the
+// goal pose (position and orientation) last; each pose faces the next one.
+nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
+                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp);
+
+// A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
+nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapFrame& frame, const ros::Time& stamp);
+
+}  // namespace eaci_ros

@@ -1,0 +1,31 @@
+// What the planner node and the move_base plugin share: a plan request on a grid view in a
+// map frame, checked and answered with a nav_msgs/Path or a one-line reason.
+#pragma once
+
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/Path.h>
+
+#include <string>
+#include <vector>
+
+#include "eaci/planner.hpp"
+#include "grid_conversion.hpp"
+#include "ros_parameters.hpp"
+
+namespace eaci_ros {
+
+struct GridPlan {
+  bool ok = false;
+  std::string error;          // one line when !ok
+  nav_msgs::Path path;        // in the map frame; empty when !ok
+  eaci::PlanResult result;    // the core's result (pheromone filled if asked for)
+};
+
+// Plans from `start` to `goal` (positions in `frame`, frame ids already checked) on `view`:
+// start off the map or in an obstacle, goal off the map or in an obstacle beyond
+// `tolerance` metres, no route, or no route within max_planning_time -> !ok with the reason.
+GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
+                    const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
+                    const RosPlannerOptions& options);
+
+}  // namespace eaci_ros

@@ -1,0 +1,143 @@
+// eaci_planner_node: EACI on a saved map or the /map topic, as a nav_msgs/GetPlan service.
+//
+//   ~map_file (string)   map_server YAML to load; empty -> subscribe to `map`
+//   ~frame_id (string)   frame of a map loaded from ~map_file (default "map"); it is
+//                        published latched on `map` for RViz and other nodes
+//   every core parameter and the ROS options of ros_parameters.hpp under ~ (~robot_radius
+//   grows the obstacles so that a robot of that radius, planned as a point, keeps clear)
+// Services: ~make_plan (nav_msgs/GetPlan). Topics: ~plan (nav_msgs/Path), ~pheromone
+// (nav_msgs/OccupancyGrid, with ~visualize_pheromone).
+#include <nav_msgs/GetPlan.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "eaci/io/map_io.hpp"
+#include "grid_planner.hpp"
+
+namespace eaci_ros {
+
+class PlannerNode {
+ public:
+  PlannerNode() : private_nh_("~"), tf_listener_(tf_buffer_) {
+    readParameters(private_nh_, params_, options_);
+    plan_pub_ = private_nh_.advertise<nav_msgs::Path>("plan", 1, true);
+    pheromone_pub_ = private_nh_.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
+    std::string map_file;
+    private_nh_.param<std::string>("map_file", map_file, "");
+    if (!map_file.empty()) {
+      std::string frame_id;
+      private_nh_.param<std::string>("frame_id", frame_id, "map");
+      const nav_msgs::OccupancyGrid loaded = toOccupancyGrid(eaci::loadMap(map_file), frame_id);
+      setMap(loaded);
+      map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+      map_pub_.publish(loaded);
+      ROS_INFO("eaci_planner_node: loaded %s (%u x %u cells, %.3f m)", map_file.c_str(), map_.info.width,
+               map_.info.height, map_.info.resolution);
+    } else {
+      map_sub_ = nh_.subscribe("map", 1, &PlannerNode::onMap, this);
+      ROS_INFO("eaci_planner_node: waiting for a map on %s", map_sub_.getTopic().c_str());
+    }
+    service_ = private_nh_.advertiseService("make_plan", &PlannerNode::onMakePlan, this);
+  }
+
+ private:
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& map) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    setMap(*map);
+    ROS_INFO("eaci_planner_node: new map %u x %u cells at %.3f m in frame %s", map_.info.width, map_.info.height,
+             map_.info.resolution, map_.header.frame_id.c_str());
+  }
+
+  void setMap(const nav_msgs::OccupancyGrid& map) {
+    map_ = map;
+    if (map_.header.frame_id.empty()) map_.header.frame_id = "map";
+    inflateObstacles(map_, options_.robot_radius, options_.occupied_threshold);
+    have_map_ = map_.data.size() == static_cast<std::size_t>(map_.info.width) * map_.info.height &&
+                !map_.data.empty() && map_.info.resolution > 0;
+    if (!have_map_) ROS_ERROR("eaci_planner_node: the map is empty or malformed; plans will fail until a good one arrives");
+  }
+
+  // Pose in the map frame, or false with the reason.
+  bool inMapFrame(const geometry_msgs::PoseStamped& pose, const char* what, geometry_msgs::PoseStamped& out,
+                  std::string& error) {
+    if (pose.header.frame_id.empty() || pose.header.frame_id == map_.header.frame_id) {
+      out = pose;
+      out.header.frame_id = map_.header.frame_id;
+      return true;
+    }
+    try {
+      out = tf_buffer_.transform(pose, map_.header.frame_id, ros::Duration(0.2));
+      return true;
+    } catch (const tf2::TransformException& e) {
+      error = std::string(what) + " is in frame '" + pose.header.frame_id + "', which cannot be transformed to '" +
+              map_.header.frame_id + "': " + e.what();
+      return false;
+    }
+  }
+
+  bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    response.plan.header.frame_id = map_.header.frame_id;
+    response.plan.header.stamp = ros::Time::now();
+    if (!have_map_) {
+      ROS_ERROR("eaci_planner_node: make_plan: no map yet");
+      return true;
+    }
+    geometry_msgs::PoseStamped start, goal;
+    std::string error;
+    if (!inMapFrame(request.start, "start", start, error) || !inMapFrame(request.goal, "goal", goal, error)) {
+      ROS_ERROR("eaci_planner_node: make_plan: %s", error.c_str());
+      return true;
+    }
+    const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
+    const GridPlan plan = planOnGrid(viewOf(map_, options_.occupied_threshold, options_.allow_unknown), frameOf(map_),
+                                     start, goal, tolerance, params_, options_);
+    if (!plan.ok) {
+      ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());
+      return true;
+    }
+    ROS_INFO("eaci_planner_node: %s route of %.3f m (%zu poses, %d islands, %lld lost ants)",
+             eaci::toString(options_.algorithm), plan.result.length * map_.info.resolution, plan.path.poses.size(),
+             static_cast<int>(plan.result.islands.size()), plan.result.lost_ants_total);
+    response.plan = plan.path;
+    if (options_.publish_plan) plan_pub_.publish(plan.path);
+    if (options_.visualize_pheromone && !plan.result.pheromone.empty())
+      pheromone_pub_.publish(fieldToGrid(plan.result.pheromone, frameOf(map_), ros::Time::now()));
+    return true;
+  }
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  eaci::Parameters params_;
+  RosPlannerOptions options_;
+  std::mutex mutex_;
+  nav_msgs::OccupancyGrid map_;
+  bool have_map_ = false;
+  ros::Subscriber map_sub_;
+  ros::Publisher map_pub_, plan_pub_, pheromone_pub_;
+  ros::ServiceServer service_;
+};
+
+}  // namespace eaci_ros
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "eaci_planner_node");
+  try {
+    eaci_ros::PlannerNode node;
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL("eaci_planner_node: %s", e.what());
+    return 1;
+  }
+  return 0;
+}
