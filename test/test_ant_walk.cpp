@@ -71,8 +71,8 @@ TEST(AntWalk, TakesTheGoalAtOnceWhenItIsANeighbour) {
   const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, false);
   eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   // Make every other move from the start overwhelmingly attractive.
-  for (int d = 0; d < eaci::kDirections; ++d) field.tau(grid.index(Cell{1, 1}), d) = 1e6;
-  field.tau(grid.index(Cell{1, 1}), 0) = 1e-9;  // east, to the goal (1,2)
+  for (int d = 0; d < eaci::kDirections; ++d) field.set(grid.index(Cell{1, 1}), d, 1e6);
+  field.set(grid.index(Cell{1, 1}), 0, 1e-9);  // east, to the goal (1,2)
   field.refreshWeights();
   const eaci::WalkSetup setup(grid, field, {Cell{1, 1}, Cell{1, 2}}, eaci::HeuristicRule::kGoalDistance, 1.0, 0.5);
   eaci::AntWalker walker;
@@ -90,10 +90,10 @@ TEST(AntWalk, RouletteFollowsTheProbabilitiesOfEquationEight) {
   const BinaryGrid grid = BinaryGrid::fromRows({{1, 0, 0, 0}, {0, 0, 0, 1}}, false);
   eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   const std::size_t s = grid.index(Cell{1, 1});
-  field.tau(s, 2) = 3.0;    // north
-  field.tau(s, 1) = 1.0;    // north-east
-  field.tau(s, 4) = 1e-12;  // west
-  field.tau(s, 0) = 1e-12;  // east
+  field.set(s, 2, 3.0);    // north
+  field.set(s, 1, 1.0);    // north-east
+  field.set(s, 4, 1e-12);  // west
+  field.set(s, 0, 1e-12);  // east
   field.refreshWeights();
   const eaci::WalkSetup setup(grid, field, {Cell{1, 1}, Cell{0, 3}}, eaci::HeuristicRule::kGoalDistance, 0.0, 0.5);
   eaci::AntWalker walker;

@@ -27,3 +27,31 @@ TEST(Heuristic, EtaValues) {
   EXPECT_DOUBLE_EQ(eaci::turningAwareHeuristic(4.0, 1.0), 0.2);          // Eq. 16
   EXPECT_DOUBLE_EQ(eaci::turningAwareHeuristic(2.0, 0.0), 0.5);
 }
+
+#include <cmath>
+
+#include "eaci/aco/ant_walk.hpp"
+
+TEST(Heuristic, FastInversePowerEqualsPow) {
+  for (double beta : {0.0, 1.0, 2.0, 7.0, 12.0, 2.5, 7.3, 13.0}) {
+    const eaci::InversePower power(beta);
+    for (double x : {0.5, 1.0, 1.7, 12.25, 80.0})
+      EXPECT_NEAR(power(x) / std::pow(x, -beta), 1.0, 1e-12) << "beta " << beta << " x " << x;
+  }
+}
+
+TEST(Heuristic, WalkWeightIsEtaToTheBetaOfEquationSixteen) {
+  // The walk's tabulated weight must equal (1 / (d_jg + sigma))^beta computed from the equations.
+  const auto grid = eaci::BinaryGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  const eaci::WalkSetup setup(grid, field, {eaci::Cell{0, 0}, eaci::Cell{5, 4}}, eaci::HeuristicRule::kTurningAware,
+                              7.0, 0.5);
+  const eaci::Cell next{2, 1};
+  const double d = std::hypot(5 - 2, 4 - 1);
+  for (int previous : {-1, 0, 1, 2, 3, 4, 5, 6, 7}) {
+    const int dir = 7;  // south-east
+    const double expected =
+        std::pow(eaci::turningAwareHeuristic(d, eaci::turningCost(previous, dir, 0.5)), 7.0);
+    EXPECT_NEAR(setup.heuristicWeight(grid.index(next), 1, previous, dir) / expected, 1.0, 1e-6);
+  }
+}

@@ -22,6 +22,44 @@ enum class HeuristicRule {
   kTurningAware,  // Eq. 16-17, EACI
 };
 
+// eta^beta for eta = 1 / x: x^-beta, by a fixed chain of multiplications when beta is a small
+// whole number (the paper's 7), else by pow().
+class InversePower {
+ public:
+  explicit InversePower(double beta) : beta_(beta) {
+    if (beta >= 0 && beta <= 12 && beta == std::floor(beta)) whole_ = static_cast<int>(beta);
+  }
+  double operator()(double x) const {
+    switch (whole_) {
+      case 0: return 1.0;
+      case 1: return 1.0 / x;
+      case 2: return 1.0 / power<2>(x);
+      case 3: return 1.0 / power<3>(x);
+      case 4: return 1.0 / power<4>(x);
+      case 5: return 1.0 / power<5>(x);
+      case 6: return 1.0 / power<6>(x);
+      case 7: return 1.0 / power<7>(x);
+      case 8: return 1.0 / power<8>(x);
+      case 9: return 1.0 / power<9>(x);
+      case 10: return 1.0 / power<10>(x);
+      case 11: return 1.0 / power<11>(x);
+      case 12: return 1.0 / power<12>(x);
+      default: return std::pow(x, -beta_);
+    }
+  }
+
+ private:
+  template <int N>
+  static double power(double x) {
+    if constexpr (N == 1) return x;
+    else if constexpr (N % 2 == 0) { const double h = power<N / 2>(x); return h * h; }
+    else return x * power<N - 1>(x);
+  }
+
+  double beta_;
+  int whole_ = -1;
+};
+
 // Everything an ant reads; shared by all ants of an iteration and never written during it.
 struct WalkSetup {
   const BinaryGrid* grid = nullptr;
@@ -32,15 +70,59 @@ struct WalkSetup {
   // else leg_distance[z] is the grid distance to waypoint z (geodesic islands).
   std::vector<LegDistanceField> leg_distance;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
-  double beta = 7.0;
-  double epsilon = 0.5;
+  InversePower eta_power{7.0};                // x -> x^-beta
+  // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
+  std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
+  std::vector<std::uint8_t> moves;            // per cell: bit d set when the move in direction d is allowed
+  std::array<std::ptrdiff_t, kDirections> index_step{};  // grid index difference of each move
+  // d_jg tabulated per waypoint over the whole grid (filled by tabulateDistances() when it
+  // fits kMaxDistanceTableEntries): one load per candidate instead of a computation.
+  std::vector<std::vector<float>> distance_table;
+  static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 24;  // 64 MiB of floats
 
   WalkSetup(const BinaryGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
-            double beta_, double epsilon_)
+            double beta, double epsilon)
       : grid(&g), pheromone(&field), waypoints(std::move(points)), waypoint_of_cell(g.cellCount(), -1),
-        heuristic(rule), beta(beta_), epsilon(epsilon_) {
+        heuristic(rule), eta_power(beta), moves(g.cellCount(), 0) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
       waypoint_of_cell[g.index(waypoints[w])] = static_cast<std::int32_t>(w);
+    if (rule == HeuristicRule::kTurningAware)
+      for (int from = 0; from < kDirections; ++from)
+        for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] = turningCost(from, to, epsilon);
+    for (int d = 0; d < kDirections; ++d) index_step[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * g.width() + kDirCol[d];
+    for (std::size_t i = 0; i < g.cellCount(); ++i) {
+      const Cell c = g.cellAt(i);
+      for (int d = 0; d < kDirections; ++d)
+        if (g.canMove(c, d)) moves[i] |= static_cast<std::uint8_t>(1u << d);
+    }
+    tabulateDistances();
+  }
+
+  // d_jg: distance from `next` to waypoint `target`.
+  double distanceToWaypoint(Cell next, std::size_t target) const {
+    if (!leg_distance.empty()) return leg_distance[target].at(next);
+    const Cell goal = waypoints[target];
+    return std::hypot(next.row - goal.row, next.col - goal.col);
+  }
+
+  // Fills distance_table once the waypoints and leg distances are set, if it fits.
+  void tabulateDistances() {
+    distance_table.clear();
+    if (grid->cellCount() * (waypoints.size() - 1) > kMaxDistanceTableEntries) return;
+    distance_table.resize(waypoints.size());
+    for (std::size_t z = 1; z < waypoints.size(); ++z) {
+      distance_table[z].resize(grid->cellCount());
+      for (std::size_t i = 0; i < grid->cellCount(); ++i)
+        distance_table[z][i] = static_cast<float>(distanceToWaypoint(grid->cellAt(i), z));
+    }
+  }
+
+  // eta_ij^beta of Eq. 9 (sigma = 0) or Eq. 16-17, for the move in direction `dir` to cell `next`.
+  double heuristicWeight(std::size_t next, std::size_t target, int previous_dir, int dir) const {
+    const double sigma = turning_cost[previous_dir + 1][dir];
+    const double distance = distance_table.empty() ? distanceToWaypoint(grid->cellAt(next), target)
+                                                   : distance_table[target][next];
+    return eta_power(distance + sigma);
   }
 };
 
@@ -61,15 +143,13 @@ class AntWalker {
     std::size_t target = 1;
     int previous_dir = -1;
     while (target < setup.waypoints.size()) {
-      const Cell here = grid.cellAt(current);
-      const Cell goal = setup.waypoints[target];
+      const std::uint8_t allowed = setup.moves[current];
       int count = 0;
       int chosen = -1;
       double total = 0.0;
       for (int d = 0; d < kDirections; ++d) {
-        if (!grid.canMove(here, d)) continue;
-        const Cell next = step(here, d);
-        const std::size_t j = grid.index(next);
+        if (!(allowed & (1u << d))) continue;
+        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(current) + setup.index_step[d]);
         if (visited(j)) continue;
         const std::int32_t waypoint = setup.waypoint_of_cell[j];
         if (waypoint == static_cast<std::int32_t>(target)) {
@@ -77,12 +157,9 @@ class AntWalker {
           break;
         }
         if (waypoint >= 0) continue;  // another island: not on this leg
-        const double distance = setup.leg_distance.empty() ? std::hypot(next.row - goal.row, next.col - goal.col)
-                                                           : setup.leg_distance[target].at(next);
-        const double eta = setup.heuristic == HeuristicRule::kGoalDistance
-                               ? goalDistanceHeuristic(distance)
-                               : turningAwareHeuristic(distance, turningCost(previous_dir, d, setup.epsilon));
-        const double weight = setup.pheromone->weight(current, d) * std::pow(eta, setup.beta);  // Eq. 8 numerator
+        // Eq. 8 numerator: tau^alpha * eta^beta
+        const double weight =
+            setup.pheromone->weight(current, d) * setup.heuristicWeight(j, target, previous_dir, d);
         candidate_dirs_[count] = d;
         candidate_weights_[count] = weight;
         total += weight;
@@ -92,7 +169,7 @@ class AntWalker {
         if (count == 0) return;  // deadlock: a lost ant
         chosen = rouletteChoice(count, total, rng);
       }
-      const std::uint32_t next = static_cast<std::uint32_t>(grid.index(step(here, chosen)));
+      const auto next = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(current) + setup.index_step[chosen]);
       route.cells.push_back(next);
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);

@@ -78,7 +78,7 @@ inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::
     for (int d = 0; d < kDirections; ++d) {
       const double value = region_value[cell * kDirections + d];
       if (value == kUnset) continue;
-      field.tau(cell, d) = std::isfinite(value) ? value : lambda * max_tau0;
+      field.set(cell, d, std::isfinite(value) ? value : lambda * max_tau0);
     }
   }
   field.refreshWeights();

@@ -1,9 +1,16 @@
-// Pheromone on the directed edges of the grid: tau(i, d) for the move from cell i in direction d.
+// Pheromone on the directed edges of the grid: tau(i, d) for the move from cell i in direction d,
+// with the factor tau^alpha of Eq. 8 kept alongside so an ant's step costs no pow().
+//
+// Evaporation multiplies every edge by the same factor, so it is kept as one common scale
+// instead of a pass over all edges (on an 800 x 800 map that pass would cost more than all
+// the ants' walks): tau = scale * stored, tau^alpha = scale^alpha * stored^alpha. Reads apply
+// the floor, so every edge behaves as if clamped to kPheromoneFloor after each update.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "eaci/grid/moves.hpp"
@@ -17,42 +24,91 @@ class PheromoneField {
  public:
   PheromoneField() = default;
   PheromoneField(std::size_t cell_count, double initial, double alpha)
-      : alpha_(alpha), tau_(cell_count * kDirections, initial), weight_(cell_count * kDirections) {
+      : alpha_(alpha), floor_weight_(std::pow(kPheromoneFloor, alpha)), stored_(cell_count * kDirections, initial),
+        stored_weight_(cell_count * kDirections), dirty_(cell_count * kDirections, 0) {
     refreshWeights();
   }
 
-  std::size_t cellCount() const { return tau_.size() / kDirections; }
+  std::size_t cellCount() const { return stored_.size() / kDirections; }
   double alpha() const { return alpha_; }
 
-  double tau(std::size_t cell, int dir) const { return tau_[cell * kDirections + dir]; }
-  double& tau(std::size_t cell, int dir) { return tau_[cell * kDirections + dir]; }
+  double tau(std::size_t cell, int dir) const {
+    return std::max(scale_ * stored_[cell * kDirections + dir], kPheromoneFloor);
+  }
 
-  // tau^alpha, the pheromone factor of Eq. 8, cached by refreshWeights().
-  double weight(std::size_t cell, int dir) const { return weight_[cell * kDirections + dir]; }
+  // tau^alpha, the pheromone factor of Eq. 8.
+  double weight(std::size_t cell, int dir) const {
+    return std::max(weight_scale_ * stored_weight_[cell * kDirections + dir], floor_weight_);
+  }
 
   // Largest pheromone leaving a cell (for pictures).
   double strongestFrom(std::size_t cell) const {
-    const auto first = tau_.begin() + static_cast<std::ptrdiff_t>(cell * kDirections);
-    return *std::max_element(first, first + kDirections);
+    double strongest = 0.0;
+    for (int d = 0; d < kDirections; ++d) strongest = std::max(strongest, tau(cell, d));
+    return strongest;
   }
 
+  // Sets tau of one edge; its weight follows at the next refreshWeights() or refreshChanged().
+  void set(std::size_t cell, int dir, double value) { stored_[cell * kDirections + dir] = value / scale_; }
+
+  // tau <- (1 - rho) tau on every edge.
   void evaporate(double rho) {
     const double keep = 1.0 - rho;
-    for (double& t : tau_) t *= keep;
+    if (!(keep > 0.0)) {  // rho = 1: everything at the floor
+      std::fill(stored_.begin(), stored_.end(), 0.0);
+      std::fill(stored_weight_.begin(), stored_weight_.end(), 0.0);
+      scale_ = weight_scale_ = 1.0;
+      return;
+    }
+    scale_ *= keep;
+    weight_scale_ *= std::pow(keep, alpha_);
+    if (std::min(scale_, weight_scale_) < 1e-100) renormalise();
   }
 
-  void clampToFloor() {
-    for (double& t : tau_) t = std::max(t, kPheromoneFloor);
+  // tau += amount on one edge (negative for the penalty of Eq. 24); call refreshChanged() after.
+  void deposit(std::size_t cell, int dir, double amount) {
+    const std::size_t e = cell * kDirections + dir;
+    stored_[e] += amount / scale_;
+    if (!dirty_[e]) {
+      dirty_[e] = 1;
+      changed_.push_back(static_cast<std::uint32_t>(e));
+    }
   }
 
+  // Floors and re-weighs the edges deposit() touched since the last call: one pow() per edge.
+  void refreshChanged() {
+    for (std::uint32_t e : changed_) reweigh(e);
+    changed_.clear();
+  }
+
+  // Floors and re-weighs every edge.
   void refreshWeights() {
-    for (std::size_t e = 0; e < tau_.size(); ++e) weight_[e] = std::pow(tau_[e], alpha_);
+    for (std::size_t e = 0; e < stored_.size(); ++e) reweigh(e);
+    changed_.clear();
   }
 
  private:
+  void reweigh(std::size_t e) {
+    stored_[e] = std::max(stored_[e], kPheromoneFloor / scale_);
+    stored_weight_[e] = std::pow(stored_[e] * scale_, alpha_) / weight_scale_;
+    dirty_[e] = 0;
+  }
+
+  // Folds the common scale into the stored values before it underflows.
+  void renormalise() {
+    for (double& s : stored_) s *= scale_;
+    for (double& w : stored_weight_) w *= weight_scale_;
+    scale_ = weight_scale_ = 1.0;
+  }
+
   double alpha_ = 1.0;
-  std::vector<double> tau_;
-  std::vector<double> weight_;
+  double floor_weight_ = 0.0;
+  double scale_ = 1.0;         // tau = scale_ * stored_
+  double weight_scale_ = 1.0;  // tau^alpha = weight_scale_ * stored_weight_
+  std::vector<double> stored_;
+  std::vector<double> stored_weight_;
+  std::vector<std::uint8_t> dirty_;
+  std::vector<std::uint32_t> changed_;
 };
 
 }  // namespace eaci

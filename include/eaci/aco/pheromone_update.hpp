@@ -11,7 +11,7 @@
 namespace eaci {
 
 inline void depositOnRoute(PheromoneField& field, const AntRoute& route, double amount) {
-  for (std::size_t k = 0; k < route.dirs.size(); ++k) field.tau(route.cells[k], route.dirs[k]) += amount;
+  for (std::size_t k = 0; k < route.dirs.size(); ++k) field.deposit(route.cells[k], route.dirs[k], amount);
 }
 
 // Eq. 10-11: tau <- (1 - rho) tau + sum_k Q / L_k over the edges of every complete route.
@@ -19,8 +19,7 @@ inline void classicPheromoneUpdate(PheromoneField& field, const std::vector<AntR
   field.evaporate(rho);
   for (const AntRoute& route : routes)
     if (route.complete) depositOnRoute(field, route, q / route.length);
-  field.clampToFloor();
-  field.refreshWeights();
+  field.refreshChanged();
 }
 
 // Eq. 25: rho = kappa * d_SE / L_best, capped at 1 so that (1 - rho) never turns negative.
@@ -51,8 +50,7 @@ inline void adaptivePheromoneUpdate(PheromoneField& field, const std::vector<Ant
   depositOnRoute(field, routes[static_cast<std::size_t>(best)], rho * bestRouteReward(kappa, q, d_se, best_length));
   depositOnRoute(field, routes[static_cast<std::size_t>(worst)],
                  rho * worstRoutePenalty(kappa, q, d_se, best_length, worst_length));
-  field.clampToFloor();
-  field.refreshWeights();
+  field.refreshChanged();
 }
 
 }  // namespace eaci

@@ -51,6 +51,7 @@ inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, con
   WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
                   params.epsilon);
   setup.leg_distance = std::move(islands.leg_distance);
+  setup.tabulateDistances();
   Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
   result.run = colony.run(should_stop, observer);
   return result;
