@@ -68,7 +68,7 @@ TEST(Parameters, SetByName) {
   EXPECT_DOUBLE_EQ(p.alpha, 1.5);
   EXPECT_TRUE(p.allow_corner_cutting);
   EXPECT_EQ(p.seed, 42u);
-  EXPECT_EQ(eaci::parameterNames().size(), 16u);
+  EXPECT_EQ(eaci::parameterNames().size(), 17u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

@@ -78,7 +78,7 @@ struct WalkSetup {
   // d_jg tabulated per waypoint over the whole grid (filled by tabulateDistances() when it
   // fits kMaxDistanceTableEntries): one load per candidate instead of a computation.
   std::vector<std::vector<float>> distance_table;
-  static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 24;  // 64 MiB of floats
+  static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
 
   WalkSetup(const BinaryGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
             double beta, double epsilon)
@@ -117,11 +117,14 @@ struct WalkSetup {
     }
   }
 
-  // eta_ij^beta of Eq. 9 (sigma = 0) or Eq. 16-17, for the move in direction `dir` to cell `next`.
-  double heuristicWeight(std::size_t next, std::size_t target, int previous_dir, int dir) const {
+  // eta_ij^beta of Eq. 9 (sigma = 0) or Eq. 16-17, for the move in direction `dir` from cell
+  // `from` (grid index `from_index`).
+  double heuristicWeight(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
-    const double distance = distance_table.empty() ? distanceToWaypoint(grid->cellAt(next), target)
-                                                   : distance_table[target][next];
+    const double distance =
+        distance_table.empty()
+            ? distanceToWaypoint(step(from, dir), target)
+            : distance_table[target][static_cast<std::size_t>(static_cast<std::ptrdiff_t>(from_index) + index_step[dir])];
     return eta_power(distance + sigma);
   }
 };
@@ -143,6 +146,7 @@ class AntWalker {
     std::size_t target = 1;
     int previous_dir = -1;
     while (target < setup.waypoints.size()) {
+      const Cell here = grid.cellAt(current);
       const std::uint8_t allowed = setup.moves[current];
       int count = 0;
       int chosen = -1;
@@ -159,7 +163,7 @@ class AntWalker {
         if (waypoint >= 0) continue;  // another island: not on this leg
         // Eq. 8 numerator: tau^alpha * eta^beta
         const double weight =
-            setup.pheromone->weight(current, d) * setup.heuristicWeight(j, target, previous_dir, d);
+            setup.pheromone->weight(current, d) * setup.heuristicWeight(here, current, target, previous_dir, d);
         candidate_dirs_[count] = d;
         candidate_weights_[count] = weight;
         total += weight;

@@ -42,15 +42,18 @@ inline CellPath descendDistanceField(const BinaryGrid& grid, const std::vector<d
 // Islands on the shortest route: after S, the first cell of the route at least r_s
 // (Eq. 13) further along it that the auxiliary map leaves free, and so on; E is the last
 // island once it is within r_s along the route. The route through the islands is the
-// shortest route, and consecutive legs never overlap.
+// shortest route, and consecutive legs never overlap. With `max_spacing` > 0, r_s is capped
+// at that many cells: on large maps long legs would leave the ants' heuristic too flat to
+// guide them (1/d^beta barely differs between neighbours when d is large).
 inline std::vector<Cell> geodesicIslands(const BinaryGrid& auxiliary, const CellPath& shortest_route, Cell start,
-                                         Cell goal, int island_count) {
+                                         Cell goal, int island_count, double max_spacing = 0.0) {
   std::vector<Cell> islands{start};
   if (start == goal || shortest_route.size() < 2) {
     if (!(start == goal)) islands.push_back(goal);
     return islands;
   }
-  const double spacing = searchRadius(start, goal, island_count);
+  double spacing = searchRadius(start, goal, island_count);
+  if (max_spacing > 0) spacing = std::min(spacing, max_spacing);
   std::vector<double> along(shortest_route.size(), 0.0);  // route length from S to each cell
   for (std::size_t k = 1; k < shortest_route.size(); ++k)
     along[k] = along[k - 1] + stepLength(directionBetween(shortest_route[k - 1], shortest_route[k]));

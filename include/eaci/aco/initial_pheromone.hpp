@@ -81,7 +81,7 @@ inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::
       field.set(cell, d, std::isfinite(value) ? value : lambda * max_tau0);
     }
   }
-  field.refreshWeights();
+  field.refreshChanged();
   return field;
 }
 

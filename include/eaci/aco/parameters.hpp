@@ -36,6 +36,7 @@ struct Parameters {
   double aco_tau0 = 1.0;         // classic ACO uniform initial pheromone
   bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
+  double island_spacing_max = 10.0;  // geodesic islands: at most this many cells apart (0 = r_s only)
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
@@ -62,6 +63,8 @@ inline std::string validationError(const Parameters& p) {
   else if (!finite(p.epsilon) || p.epsilon < 0) e << "epsilon must be a number >= 0 (got " << p.epsilon << ")";
   else if (!finite(p.aco_rho) || p.aco_rho <= 0 || p.aco_rho > 1) e << "aco_rho must be in (0, 1] (got " << p.aco_rho << ")";
   else if (!finite(p.aco_tau0) || p.aco_tau0 <= 0) e << "aco_tau0 must be a positive number (got " << p.aco_tau0 << ")";
+  else if (!finite(p.island_spacing_max) || p.island_spacing_max < 0)
+    e << "island_spacing_max must be a number of cells >= 0 (got " << p.island_spacing_max << ")";
   else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
@@ -140,6 +143,8 @@ inline const std::map<std::string, Setter>& parameterSetters() {
          else if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
          else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
        }},
+      {"island_spacing_max",
+       [](Parameters& p, const std::string& v) { p.island_spacing_max = parseDouble("island_spacing_max", v); }},
       {"early_stop_iterations",
        [](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); }},
       {"seed",

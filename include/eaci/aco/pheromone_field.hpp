@@ -24,10 +24,10 @@ class PheromoneField {
  public:
   PheromoneField() = default;
   PheromoneField(std::size_t cell_count, double initial, double alpha)
-      : alpha_(alpha), floor_weight_(std::pow(kPheromoneFloor, alpha)), stored_(cell_count * kDirections, initial),
-        stored_weight_(cell_count * kDirections), dirty_(cell_count * kDirections, 0) {
-    refreshWeights();
-  }
+      : alpha_(alpha), floor_weight_(std::pow(kPheromoneFloor, alpha)),
+        stored_(cell_count * kDirections, std::max(initial, kPheromoneFloor)),
+        stored_weight_(cell_count * kDirections, std::pow(std::max(initial, kPheromoneFloor), alpha)),
+        dirty_(cell_count * kDirections, 0) {}
 
   std::size_t cellCount() const { return stored_.size() / kDirections; }
   double alpha() const { return alpha_; }
@@ -48,8 +48,12 @@ class PheromoneField {
     return strongest;
   }
 
-  // Sets tau of one edge; its weight follows at the next refreshWeights() or refreshChanged().
-  void set(std::size_t cell, int dir, double value) { stored_[cell * kDirections + dir] = value / scale_; }
+  // Sets tau of one edge; its weight follows at the next refreshChanged().
+  void set(std::size_t cell, int dir, double value) {
+    const std::size_t e = cell * kDirections + dir;
+    stored_[e] = value / scale_;
+    markChanged(e);
+  }
 
   // tau <- (1 - rho) tau on every edge.
   void evaporate(double rho) {
@@ -69,13 +73,10 @@ class PheromoneField {
   void deposit(std::size_t cell, int dir, double amount) {
     const std::size_t e = cell * kDirections + dir;
     stored_[e] += amount / scale_;
-    if (!dirty_[e]) {
-      dirty_[e] = 1;
-      changed_.push_back(static_cast<std::uint32_t>(e));
-    }
+    markChanged(e);
   }
 
-  // Floors and re-weighs the edges deposit() touched since the last call: one pow() per edge.
+  // Floors and re-weighs the edges set() or deposit() touched since the last call: one pow() per edge.
   void refreshChanged() {
     for (std::uint32_t e : changed_) reweigh(e);
     changed_.clear();
@@ -88,6 +89,12 @@ class PheromoneField {
   }
 
  private:
+  void markChanged(std::size_t e) {
+    if (dirty_[e]) return;
+    dirty_[e] = 1;
+    changed_.push_back(static_cast<std::uint32_t>(e));
+  }
+
   void reweigh(std::size_t e) {
     stored_[e] = std::max(stored_[e], kPheromoneFloor / scale_);
     stored_weight_[e] = std::pow(stored_[e] * scale_, alpha_) / weight_scale_;

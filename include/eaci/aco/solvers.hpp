@@ -28,13 +28,14 @@ struct IslandPlan {
 };
 
 // Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
-// kPaper: Eq. 13-15; kGeodesic: r_s apart on a shortest route, with exact leg distances.
+// kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a shortest route,
+// with exact leg distances.
 inline IslandPlan planIslands(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params) {
   const BinaryGrid aux = auxiliaryMap(grid, start, goal);
   if (params.island_strategy == IslandStrategy::kPaper)
     return {paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands), {}};
   const CellPath route = descendDistanceField(grid, distanceField(grid, goal), start);
-  IslandPlan plan{geodesicIslands(aux, route, start, goal, params.islands), {}};
+  IslandPlan plan{geodesicIslands(aux, route, start, goal, params.islands, params.island_spacing_max), {}};
   plan.leg_distance = legDistanceFields(grid, route, plan.islands);
   return plan;
 }
