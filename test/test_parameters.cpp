@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <map>
 #include <limits>
 
 #include "eaci/aco/parameters.hpp"
@@ -84,4 +85,18 @@ TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {
   // Parsed but out of range: validation's job.
   eaci::setParameter(p, "alpha", "nan");
   EXPECT_NE(eaci::validationError(p).find("alpha"), std::string::npos);
+}
+
+TEST(Parameters, EveryNameCanBeReadBack) {
+  eaci::Parameters p;
+  eaci::setParameter(p, "ants", "33");
+  eaci::setParameter(p, "island_strategy", "paper");
+  eaci::setParameter(p, "seed", "18446744073709551615");
+  const auto values = eaci::parameterValues(p);
+  ASSERT_EQ(values.size(), eaci::parameterNames().size());
+  std::map<std::string, eaci::ParameterValue> by_name(values.begin(), values.end());
+  EXPECT_EQ(std::get<std::int64_t>(by_name.at("ants")), 33);
+  EXPECT_EQ(std::get<std::string>(by_name.at("island_strategy")), "paper");
+  EXPECT_EQ(std::get<std::uint64_t>(by_name.at("seed")), 18446744073709551615ull);
+  EXPECT_DOUBLE_EQ(std::get<double>(by_name.at("alpha")), 1.1);
 }

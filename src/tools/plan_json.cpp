@@ -38,30 +38,15 @@ const char* statusName(PlanStatus s) {
 }  // namespace
 
 json parametersToJson(const Parameters& p) {
-  // Parameters has setters by name but no getters; keep this table in step with
-  // parameterSetters(). A name without a getter is still listed (as null).
-  const std::map<std::string, std::function<json()>> getters = {
-      {"ants", [&] { return json(p.ants); }},
-      {"max_iterations", [&] { return json(p.max_iterations); }},
-      {"alpha", [&] { return finiteOrNull(p.alpha); }},
-      {"beta", [&] { return finiteOrNull(p.beta); }},
-      {"q", [&] { return finiteOrNull(p.q); }},
-      {"kappa", [&] { return finiteOrNull(p.kappa); }},
-      {"islands", [&] { return json(p.islands); }},
-      {"lambda", [&] { return finiteOrNull(p.lambda); }},
-      {"epsilon", [&] { return finiteOrNull(p.epsilon); }},
-      {"aco_rho", [&] { return finiteOrNull(p.aco_rho); }},
-      {"aco_tau0", [&] { return finiteOrNull(p.aco_tau0); }},
-      {"allow_corner_cutting", [&] { return json(p.allow_corner_cutting); }},
-      {"island_strategy", [&] { return json(toString(p.island_strategy)); }},
-      {"early_stop_iterations", [&] { return json(p.early_stop_iterations); }},
-      {"seed", [&] { return json(p.seed); }},
-      {"threads", [&] { return json(p.threads); }},
-  };
   json out = json::object();
-  for (const std::string& name : parameterNames()) {
-    const auto it = getters.find(name);
-    out[name] = it != getters.end() ? it->second() : json(nullptr);
+  for (const auto& [name, value] : parameterValues(p)) {
+    out[name] = std::visit(
+        [](const auto& v) -> json {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, double>) return finiteOrNull(v);
+          else return json(v);
+        },
+        value);
   }
   return out;
 }

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace eaci {
@@ -75,6 +77,7 @@ inline void validate(const Parameters& p) {
   if (!error.empty()) throw ParameterError(error);
 }
 
+
 inline const char* toString(IslandStrategy s) {
   switch (s) {
     case IslandStrategy::kGeodesic: return "geodesic";
@@ -122,64 +125,103 @@ inline bool parseBool(const std::string& key, const std::string& text) {
 
 using Setter = std::function<void(Parameters&, const std::string&)>;
 
-inline const std::map<std::string, Setter>& parameterSetters() {
-  static const std::map<std::string, Setter> setters = {
-      {"ants", [](Parameters& p, const std::string& v) { p.ants = parseInt("ants", v); }},
-      {"max_iterations", [](Parameters& p, const std::string& v) { p.max_iterations = parseInt("max_iterations", v); }},
-      {"alpha", [](Parameters& p, const std::string& v) { p.alpha = parseDouble("alpha", v); }},
-      {"beta", [](Parameters& p, const std::string& v) { p.beta = parseDouble("beta", v); }},
-      {"q", [](Parameters& p, const std::string& v) { p.q = parseDouble("q", v); }},
-      {"kappa", [](Parameters& p, const std::string& v) { p.kappa = parseDouble("kappa", v); }},
-      {"islands", [](Parameters& p, const std::string& v) { p.islands = parseInt("islands", v); }},
-      {"lambda", [](Parameters& p, const std::string& v) { p.lambda = parseDouble("lambda", v); }},
-      {"epsilon", [](Parameters& p, const std::string& v) { p.epsilon = parseDouble("epsilon", v); }},
-      {"aco_rho", [](Parameters& p, const std::string& v) { p.aco_rho = parseDouble("aco_rho", v); }},
-      {"aco_tau0", [](Parameters& p, const std::string& v) { p.aco_tau0 = parseDouble("aco_tau0", v); }},
+}  // namespace detail
+
+// A parameter's value as it is: whole number, real number, boolean or word.
+using ParameterValue = std::variant<std::int64_t, std::uint64_t, double, bool, std::string>;
+
+namespace detail {
+
+using Getter = std::function<ParameterValue(const Parameters&)>;
+
+struct ParameterAccess {
+  Setter set;
+  Getter get;
+};
+
+// The one table of parameter names: CLI --set, --params files, ROS and the JSON output use it.
+inline const std::map<std::string, ParameterAccess>& parameterTable() {
+  static const std::map<std::string, ParameterAccess> table = {
+      {"ants", {[](Parameters& p, const std::string& v) { p.ants = parseInt("ants", v); },
+                [](const Parameters& p) { return ParameterValue{std::int64_t{p.ants}}; }}},
+      {"max_iterations", {[](Parameters& p, const std::string& v) { p.max_iterations = parseInt("max_iterations", v); },
+                          [](const Parameters& p) { return ParameterValue{std::int64_t{p.max_iterations}}; }}},
+      {"alpha", {[](Parameters& p, const std::string& v) { p.alpha = parseDouble("alpha", v); },
+                 [](const Parameters& p) { return ParameterValue{p.alpha}; }}},
+      {"beta", {[](Parameters& p, const std::string& v) { p.beta = parseDouble("beta", v); },
+                [](const Parameters& p) { return ParameterValue{p.beta}; }}},
+      {"q", {[](Parameters& p, const std::string& v) { p.q = parseDouble("q", v); },
+             [](const Parameters& p) { return ParameterValue{p.q}; }}},
+      {"kappa", {[](Parameters& p, const std::string& v) { p.kappa = parseDouble("kappa", v); },
+                 [](const Parameters& p) { return ParameterValue{p.kappa}; }}},
+      {"islands", {[](Parameters& p, const std::string& v) { p.islands = parseInt("islands", v); },
+                   [](const Parameters& p) { return ParameterValue{std::int64_t{p.islands}}; }}},
+      {"lambda", {[](Parameters& p, const std::string& v) { p.lambda = parseDouble("lambda", v); },
+                  [](const Parameters& p) { return ParameterValue{p.lambda}; }}},
+      {"epsilon", {[](Parameters& p, const std::string& v) { p.epsilon = parseDouble("epsilon", v); },
+                   [](const Parameters& p) { return ParameterValue{p.epsilon}; }}},
+      {"aco_rho", {[](Parameters& p, const std::string& v) { p.aco_rho = parseDouble("aco_rho", v); },
+                   [](const Parameters& p) { return ParameterValue{p.aco_rho}; }}},
+      {"aco_tau0", {[](Parameters& p, const std::string& v) { p.aco_tau0 = parseDouble("aco_tau0", v); },
+                    [](const Parameters& p) { return ParameterValue{p.aco_tau0}; }}},
       {"allow_corner_cutting",
-       [](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); }},
+       {[](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); },
+        [](const Parameters& p) { return ParameterValue{p.allow_corner_cutting}; }}},
       {"island_strategy",
-       [](Parameters& p, const std::string& v) {
-         if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;
-         else if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
-         else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
-       }},
+       {[](Parameters& p, const std::string& v) {
+          if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;
+          else if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
+          else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
+        },
+        [](const Parameters& p) { return ParameterValue{std::string(toString(p.island_strategy))}; }}},
       {"island_spacing_max",
-       [](Parameters& p, const std::string& v) { p.island_spacing_max = parseDouble("island_spacing_max", v); }},
+       {[](Parameters& p, const std::string& v) { p.island_spacing_max = parseDouble("island_spacing_max", v); },
+        [](const Parameters& p) { return ParameterValue{p.island_spacing_max}; }}},
       {"early_stop_iterations",
-       [](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); }},
+       {[](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); },
+        [](const Parameters& p) { return ParameterValue{std::int64_t{p.early_stop_iterations}}; }}},
       {"seed",
-       [](Parameters& p, const std::string& v) {
-         char* end = nullptr;
-         errno = 0;
-         const unsigned long long s = std::strtoull(v.c_str(), &end, 10);
-         if (v.empty() || v[0] == '-' || v[0] == '+' || *end != '\0' || errno == ERANGE)
-           throw ParameterError("seed: '" + v + "' is not an integer in 0..18446744073709551615");
-         p.seed = static_cast<std::uint64_t>(s);
-       }},
-      {"threads", [](Parameters& p, const std::string& v) { p.threads = parseInt("threads", v); }},
+       {[](Parameters& p, const std::string& v) {
+          char* end = nullptr;
+          errno = 0;
+          const unsigned long long s = std::strtoull(v.c_str(), &end, 10);
+          if (v.empty() || v[0] == '-' || v[0] == '+' || *end != '\0' || errno == ERANGE)
+            throw ParameterError("seed: '" + v + "' is not an integer in 0..18446744073709551615");
+          p.seed = static_cast<std::uint64_t>(s);
+        },
+        [](const Parameters& p) { return ParameterValue{p.seed}; }}},
+      {"threads", {[](Parameters& p, const std::string& v) { p.threads = parseInt("threads", v); },
+                   [](const Parameters& p) { return ParameterValue{std::int64_t{p.threads}}; }}},
   };
-  return setters;
+  return table;
 }
 
 }  // namespace detail
 
 inline std::vector<std::string> parameterNames() {
   std::vector<std::string> names;
-  for (const auto& entry : detail::parameterSetters()) names.push_back(entry.first);
+  for (const auto& entry : detail::parameterTable()) names.push_back(entry.first);
   return names;
+}
+
+// Every parameter by name with its value (for reports: JSON, logs).
+inline std::vector<std::pair<std::string, ParameterValue>> parameterValues(const Parameters& p) {
+  std::vector<std::pair<std::string, ParameterValue>> values;
+  for (const auto& [name, access] : detail::parameterTable()) values.emplace_back(name, access.get(p));
+  return values;
 }
 
 // Sets one parameter from its text form. Throws ParameterError for an unknown
 // key or a value of the wrong type; range checks are validate()'s job.
 inline void setParameter(Parameters& p, const std::string& key, const std::string& value) {
-  const auto& setters = detail::parameterSetters();
-  const auto it = setters.find(key);
-  if (it == setters.end()) {
+  const auto& table = detail::parameterTable();
+  const auto it = table.find(key);
+  if (it == table.end()) {
     std::string known;
-    for (const auto& entry : setters) known += (known.empty() ? "" : ", ") + entry.first;
+    for (const auto& entry : table) known += (known.empty() ? "" : ", ") + entry.first;
     throw ParameterError("unknown parameter '" + key + "' (known: " + known + ")");
   }
-  it->second(p, value);
+  it->second.set(p, value);
 }
 
 }  // namespace eaci
