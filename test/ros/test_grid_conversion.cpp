@@ -1,0 +1,115 @@
+// The ROS <-> core conversions, without a rosmaster.
+#include <gtest/gtest.h>
+#include <ros/time.h>
+#include <tf2/utils.h>
+
+#include <cmath>
+
+#include "grid_conversion.hpp"
+
+using eaci::Cell;
+
+namespace {
+
+// 4 columns x 3 rows at 0.5 m, origin (-1, 2). Buffer rows bottom first: the top-right cell is
+// buffer row 2, column 3.
+nav_msgs::OccupancyGrid sampleGrid() {
+  nav_msgs::OccupancyGrid g;
+  g.header.frame_id = "map";
+  g.info.resolution = 0.5f;
+  g.info.width = 4;
+  g.info.height = 3;
+  g.info.origin.position.x = -1.0;
+  g.info.origin.position.y = 2.0;
+  g.info.origin.orientation.w = 1.0;
+  g.data = {0, 0, 0, 0,      // bottom row
+            0, 100, -1, 0,   // middle: occupied, unknown
+            0, 0, 0, 70};    // top row: 70 is occupied at threshold 65
+  return g;
+}
+
+}  // namespace
+
+TEST(GridConversion, WorldToCellUsesTheBottomLeftOriginAndTopFirstRows) {
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  EXPECT_EQ(eaci_ros::cellAt(frame, -0.9, 2.1), (Cell{2, 0}));  // bottom-left cell
+  EXPECT_EQ(eaci_ros::cellAt(frame, 0.9, 3.4), (Cell{0, 3}));   // top-right cell
+  EXPECT_FALSE(eaci_ros::cellAt(frame, -1.01, 2.1));
+  EXPECT_FALSE(eaci_ros::cellAt(frame, 1.0, 2.1));  // x = origin + width: off the map
+  EXPECT_FALSE(eaci_ros::cellAt(frame, std::nan(""), 2.1));
+  double x = 0, y = 0;
+  eaci_ros::cellCentre(frame, Cell{0, 3}, x, y);
+  EXPECT_DOUBLE_EQ(x, 0.75);
+  EXPECT_DOUBLE_EQ(y, 3.25);
+}
+
+TEST(GridConversion, ViewReadsOccupancyWithoutCopying) {
+  const auto grid = sampleGrid();
+  const auto view = eaci_ros::viewOf(grid, 65, false);
+  EXPECT_TRUE(view.isObstacle(Cell{1, 1}));   // 100
+  EXPECT_TRUE(view.isObstacle(Cell{1, 2}));   // unknown as obstacle
+  EXPECT_TRUE(view.isObstacle(Cell{0, 3}));   // 70 >= 65
+  EXPECT_FALSE(view.isObstacle(Cell{2, 0}));
+  EXPECT_FALSE(eaci_ros::viewOf(grid, 65, true).isObstacle(Cell{1, 2}));  // unknown as free
+  EXPECT_FALSE(eaci_ros::viewOf(grid, 75, false).isObstacle(Cell{0, 3}));
+  nav_msgs::OccupancyGrid malformed = grid;
+  malformed.data.pop_back();
+  EXPECT_TRUE(eaci_ros::viewOf(malformed, 65, false).empty());
+}
+
+TEST(GridConversion, NearestFreeCellWithinTolerance) {
+  const auto grid = sampleGrid();
+  const auto view = eaci_ros::viewOf(grid, 65, false);
+  EXPECT_EQ(eaci_ros::nearestFreeCell(view, Cell{2, 2}, 0.0), (Cell{2, 2}));  // already free
+  EXPECT_FALSE(eaci_ros::nearestFreeCell(view, Cell{1, 1}, 0.5));            // neighbours are 1 cell away
+  const auto moved = eaci_ros::nearestFreeCell(view, Cell{1, 1}, 1.0);
+  ASSERT_TRUE(moved);
+  EXPECT_EQ(std::abs(moved->row - 1) + std::abs(moved->col - 1), 1);
+  EXPECT_TRUE(view.isFree(*moved));
+}
+
+TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
+  ros::Time::init();
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  geometry_msgs::PoseStamped start, goal;
+  start.pose.position.x = -0.8;
+  start.pose.position.y = 2.2;
+  goal.pose.position.x = 0.7;
+  goal.pose.position.y = 3.3;
+  goal.pose.orientation.z = std::sin(0.25);
+  goal.pose.orientation.w = std::cos(0.25);  // yaw 0.5
+  const eaci::CellPath cells{{2, 0}, {2, 1}, {1, 2}, {0, 3}};
+  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0));
+  ASSERT_EQ(path.poses.size(), 4u);
+  EXPECT_EQ(path.header.frame_id, "map");
+  EXPECT_DOUBLE_EQ(path.poses[0].pose.position.x, -0.8);   // the request's start, not the cell centre
+  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.x, -0.25);  // centre of (2,1)
+  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.y, 2.25);
+  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.x, 0.7);    // the request's goal
+  // (2,1) -> (1,2): up and right, 45 degrees.
+  EXPECT_NEAR(tf2::getYaw(path.poses[1].pose.orientation), M_PI / 4, 1e-9);
+  EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.5, 1e-9);
+}
+
+TEST(GridConversion, InflationGrowsObstaclesByTheRadius) {
+  auto grid = sampleGrid();
+  eaci_ros::inflateObstacles(grid, 0.5, 65);  // one cell
+  const auto view = eaci_ros::viewOf(grid, 65, false);
+  EXPECT_TRUE(view.isObstacle(Cell{1, 0}));   // left of the 100
+  EXPECT_TRUE(view.isObstacle(Cell{2, 1}));   // below it
+  EXPECT_FALSE(view.isObstacle(Cell{2, 0}));  // diagonal: sqrt2 cells away
+  EXPECT_TRUE(view.isObstacle(Cell{1, 3}));   // below the 70
+}
+
+TEST(GridConversion, FieldToGridIsLogScaledAndBottomRowFirst) {
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  std::vector<double> field(12, 0.0);
+  field[0] = 1.0;    // top-left (row 0)
+  field[11] = 100.0; // bottom-right (row 2)
+  field[5] = 10.0;   // row 1, col 1
+  const auto grid = eaci_ros::fieldToGrid(field, frame, ros::Time(1.0));
+  ASSERT_EQ(grid.data.size(), 12u);
+  EXPECT_EQ(grid.data[8], 0);     // top-left: the smallest positive value
+  EXPECT_EQ(grid.data[3], 100);   // bottom-right: the largest
+  EXPECT_EQ(grid.data[5], 50);    // log-midway
+}
