@@ -164,7 +164,11 @@ inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm 
     r.status = PlanStatus::kNoPath;
     r.error = algorithm == Algorithm::kAStar
                   ? "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start)
-                  : "no ant reached the goal in " + std::to_string(r.iterations_run) + " iterations";
+                  : "no ant reached the goal in " + std::to_string(r.iterations_run) +
+                        " iterations although a route exists" +
+                        (algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kPaper
+                             ? " (the paper's islands can sit in dead ends; island_strategy=geodesic avoids them)"
+                             : "");
     return r;
   }
   r.status = PlanStatus::kSuccess;
