@@ -225,3 +225,27 @@ TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
   EXPECT_TRUE(r.stopped_early);
   EXPECT_EQ(r.iterations_run, r.iterations_to_converge + 5);
 }
+
+TEST_P(PlannerSuite, AllObstacleMapIsAClearError) {
+  const BinaryGrid walls = BinaryGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 1)), false);
+  const auto r = eaci::plan(walls, Cell{0, 0}, Cell{4, 4}, algorithm(), parameters());
+  EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
+  EXPECT_NE(r.error.find("in an obstacle"), std::string::npos) << r.error;
+}
+
+TEST_P(PlannerSuite, MoreIslandsThanTheRouteHasCells) {
+  // N far above the route's length: r_s drops below one cell; planning still works.
+  eaci::Parameters p = parameters();
+  p.islands = 100000;
+  const BinaryGrid grid = room(false);
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{7, 0}, algorithm(), p);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{7, 0}), "");
+}
+
+TEST_P(PlannerSuite, StartAndGoalOnTheMapEdge) {
+  const BinaryGrid grid = room(false);
+  const auto r = eaci::plan(grid, Cell{0, 7}, Cell{7, 0}, algorithm(), parameters());  // two corners
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 7}, Cell{7, 0}), "");
+}
