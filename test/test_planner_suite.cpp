@@ -249,3 +249,22 @@ TEST_P(PlannerSuite, StartAndGoalOnTheMapEdge) {
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 7}, Cell{7, 0}), "");
 }
+
+TEST(PlannerThreads, AntsOnFourThreadsOnEveryPaperMap) {
+  // Run under ThreadSanitizer by scripts/sanitize.sh: the ants of an iteration share the
+  // pheromone (read-only) and write only their own routes.
+  for (const auto& pc : eaci::test::paperCases()) {
+    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
+      eaci::Parameters p;
+      p.allow_corner_cutting = true;
+      p.max_iterations = 10;
+      p.threads = 4;
+      const auto four = eaci::plan(grid, pc.start, pc.goal, algorithm, p);
+      p.threads = 1;
+      const auto one = eaci::plan(grid, pc.start, pc.goal, algorithm, p);
+      EXPECT_EQ(four.path, one.path) << pc.file;
+      EXPECT_EQ(four.lost_ants_per_iteration, one.lost_ants_per_iteration) << pc.file;
+    }
+  }
+}

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The core test suite under AddressSanitizer + UndefinedBehaviorSanitizer, and the
+# multi-threaded solver tests under ThreadSanitizer. Any report fails the run.
+# The heavy tests (paper maps x 20 seeds, soak, ROS integration) run in the plain build only.
+# Usage: scripts/sanitize.sh [asan|tsan|all]   (default all)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what=${1:-all}
+EACI_WITH_ROS=OFF scripts/install_deps.sh
+export PATH=/usr/bin:$PATH
+jobs=$(nproc)
+
+configure() {  # configure BUILD_DIR SANITIZERS
+  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEACI_WITH_ROS=OFF -DEACI_BUILD_SOAK=OFF \
+    -DEACI_SANITIZE="$2" >/dev/null
+}
+
+if [ "$what" = asan ] || [ "$what" = all ]; then
+  echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer (build-asan)"
+  configure build-asan address,undefined
+  cmake --build build-asan -j"$jobs" --target eaci_tests eaci_plan
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure -j"$jobs" -E '^PaperMaps\.'
+fi
+
+if [ "$what" = tsan ] || [ "$what" = all ]; then
+  echo "sanitize: ThreadSanitizer on the multi-threaded solver tests (build-tsan)"
+  configure build-tsan thread
+  cmake --build build-tsan -j"$jobs" --target eaci_tests
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+    build-tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*'
+fi
