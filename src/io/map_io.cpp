@@ -285,6 +285,61 @@ bool hasStbImageSignature(const std::string& bytes) {
   return startsWith(bytes, "\x89PNG\r\n\x1a\n", 8) || startsWith(bytes, "BM", 2) || startsWith(bytes, "GIF8", 4);
 }
 
+std::uint32_t byteAt(const std::string& bytes, std::size_t i) {
+  return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i]));
+}
+
+// Every PNG chunk up to IEND must fit in the file. stb_image reserves an IDAT chunk's declared
+// length (up to 2 GiB) before it reads the data, so a 70-byte file could claim 1 GiB (found by
+// fuzz_image); files that fail here would fail in stb_image too, only after that allocation.
+// An empty first IDAT chunk is refused too: stb_image copies it to a null buffer (undefined
+// behaviour, found by fuzz_map_yaml).
+void checkPngChunkLengths(const std::string& bytes, const std::string& source) {
+  bool have_image_data = false;
+  std::size_t pos = 8;  // after the signature
+  while (bytes.size() - pos >= 8) {
+    const std::uint32_t length =
+        byteAt(bytes, pos) << 24 | byteAt(bytes, pos + 1) << 16 | byteAt(bytes, pos + 2) << 8 | byteAt(bytes, pos + 3);
+    const std::string type = bytes.substr(pos + 4, 4);
+    const std::size_t available = bytes.size() - pos - 8;
+    if (length > available) {
+      const bool named =
+          std::all_of(type.begin(), type.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+      fail(source, "cannot decode image: truncated PNG: chunk " + (named ? type + " " : std::string()) + "at byte " +
+                       std::to_string(pos) + " declares " + std::to_string(length) + " bytes of data, but only " +
+                       std::to_string(available) + " follow");
+    }
+    if (type == "IEND") return;
+    if (type == "IDAT") {
+      if (length == 0 && !have_image_data) fail(source, "cannot decode image: PNG with an empty first IDAT chunk");
+      have_image_data = true;
+    }
+    pos += 8 + std::size_t{length} + std::min<std::size_t>(4, available - length);  // + CRC
+  }
+}
+
+// Uncompressed BMP rows must all be in the file. stb_image's BMP reader reads zeros past the
+// end of the data, so a 149-byte file declaring 1048578 x 46 pixels decoded to a 48-million-cell
+// map (found by fuzz_image). The last row may lack its padding. The pixel data starts at the
+// file header's offset whenever stb_image accepts the file (12-byte or 40+ byte info header).
+void checkBmpPixelData(const std::string& bytes, int width, int height, const std::string& source) {
+  const auto le16 = [&bytes](std::size_t i) { return byteAt(bytes, i) | byteAt(bytes, i + 1) << 8; };
+  const auto le32 = [&le16](std::size_t i) { return le16(i) | le16(i + 2) << 16; };
+  if (bytes.size() < 18) fail(source, "cannot decode image: truncated BMP header");
+  const std::size_t bpp_at = le32(14) == 12 ? 24 : 28;
+  if (bytes.size() < bpp_at + 2) fail(source, "cannot decode image: truncated BMP header");
+  const std::uint64_t offset = le32(10);
+  const std::uint64_t bits_per_pixel = le16(bpp_at);
+  const std::uint64_t row_bits = static_cast<std::uint64_t>(width) * bits_per_pixel;
+  const std::uint64_t stride = (row_bits + 31) / 32 * 4;
+  const std::uint64_t needed = offset + stride * (static_cast<std::uint64_t>(height) - 1) + (row_bits + 7) / 8;
+  if (bytes.size() < needed) {
+    fail(source, "cannot decode image: truncated BMP: " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels of " + std::to_string(bits_per_pixel) + " bits from byte " + std::to_string(offset) +
+                     " need " + std::to_string(needed) + " bytes, the file has " + std::to_string(bytes.size()));
+  }
+}
+
 std::string stbFailureReason() {
   const char* reason = stbi_failure_reason();
   return std::string("cannot decode image: ") + (reason != nullptr ? reason : "unknown error");
@@ -298,6 +353,7 @@ GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source
     fail(source, "unrecognised image format (supported: PGM P2/P5, PNG, BMP, GIF)");
   }
   if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(source, "image file too large");
+  if (startsWith(bytes, "\x89PNG\r\n\x1a\n", 8)) checkPngChunkLengths(bytes, source);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = static_cast<int>(bytes.size());
 
@@ -308,6 +364,7 @@ GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source
   if (width <= 0 || height <= 0) fail(source, "image has no pixels");
   const std::size_t cells = checkedCellCount(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height),
                                              source);
+  if (startsWith(bytes, "BM", 2)) checkBmpPixelData(bytes, width, height, source);
 
   stbi_set_flip_vertically_on_load_thread(0);  // row 0 must stay the top row
   std::unique_ptr<stbi_uc, void (*)(void*)> decoded(
@@ -535,8 +592,7 @@ YAML::Node parseYamlDocument(const std::string& text, const std::string& yaml_pa
   }
 }
 
-MapServerMetadata readMapServerMetadata(const std::string& yaml_path) {
-  const std::string text = readFileBytes(yaml_path, kMaxYamlFileBytes);
+MapServerMetadata parseMapServerMetadata(const std::string& text, const std::string& yaml_path) {
   const YAML::Node root = parseYamlDocument(text, yaml_path);
   try {
     return YamlMapReader(yaml_path, root).read();
@@ -545,9 +601,10 @@ MapServerMetadata readMapServerMetadata(const std::string& yaml_path) {
   }
 }
 
-GrayImage loadImageFile(const std::string& image_path, const std::string& yaml_path) {
+GrayImage loadImageFile(const std::string& image_path, const std::string& yaml_path,
+                        const ImageFileReader& read_image) {
   try {
-    return decodeImage(readFileBytes(image_path, kMaxMapFileBytes), image_path);
+    return decodeImage(read_image ? read_image(image_path) : readFileBytes(image_path, kMaxMapFileBytes), image_path);
   } catch (const MapLoadError& error) {
     fail(yaml_path, std::string("image: ") + error.what());
   }
@@ -578,8 +635,13 @@ std::vector<std::uint8_t> thresholdImage(const GrayImage& image, const MapServer
 }
 
 OccupancyMap loadMapServerYaml(const std::string& yaml_path) {
-  const MapServerMetadata metadata = readMapServerMetadata(yaml_path);
-  const GrayImage image = loadImageFile(metadata.image_path, yaml_path);
+  return parseMapServerYaml(readFileBytes(yaml_path, kMaxYamlFileBytes), yaml_path);
+}
+
+OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string& yaml_path,
+                                const ImageFileReader& read_image) {
+  const MapServerMetadata metadata = parseMapServerMetadata(yaml_text, yaml_path);
+  const GrayImage image = loadImageFile(metadata.image_path, yaml_path, read_image);
 
   OccupancyMap map;
   map.width = image.width;

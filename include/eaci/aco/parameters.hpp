@@ -93,7 +93,10 @@ inline double parseDouble(const std::string& key, const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(begin, &end);
-  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
+  // Subnormal values are refused however they are spelt: strtod flags "1e-320" with ERANGE but
+  // not an exact "0x4p-1074", which then could not be written back in decimal (fuzz_parameters).
+  const bool subnormal = v != 0 && std::fabs(v) < std::numeric_limits<double>::min();
+  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || subnormal)
     throw ParameterError(key + ": '" + text + "' is not a number");
   return v;
 }
@@ -185,7 +188,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
           char* end = nullptr;
           errno = 0;
           const unsigned long long s = std::strtoull(v.c_str(), &end, 10);
-          if (v.empty() || v[0] == '-' || v[0] == '+' || *end != '\0' || errno == ERANGE)
+          // Digits only: strtoull skips leading spaces and negates "-1", so " -1" would wrap.
+          if (v.empty() || !std::isdigit(static_cast<unsigned char>(v[0])) || *end != '\0' || errno == ERANGE)
             throw ParameterError("seed: '" + v + "' is not an integer in 0..18446744073709551615");
           p.seed = static_cast<std::uint64_t>(s);
         },

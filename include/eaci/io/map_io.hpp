@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ OccupancyMap loadMap(const std::string& path);
 
 // map_server map: image, resolution, origin, negate, occupied_thresh, free_thresh, mode.
 OccupancyMap loadMapServerYaml(const std::string& yaml_path);
+
+// The same from the YAML text, as if read from the file yaml_path (errors name it, and a
+// relative image path is resolved against its directory). read_image returns the bytes of
+// the image at a resolved path; by default the image is read from disk (used by the fuzzer).
+using ImageFileReader = std::function<std::string(const std::string& image_path)>;
+OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string& yaml_path,
+                                const ImageFileReader& read_image = nullptr);
 
 // Text matrix of 0 (free) and 1 (obstacle), first line = top row. Cells separated by
 // spaces, tabs or commas, or written without separators ("0110"). Resolution 1, origin 0.

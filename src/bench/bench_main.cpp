@@ -1,0 +1,97 @@
+// eaci_bench: reproduces the paper's Tables 1-3 (`paper`), its parameter studies and the
+// classic ACO evaporation study (`sweep`), and measures speed and memory on generated maps
+// of growing size (`scale`). Each command writes JSON, CSV and Markdown into --out.
+
+#include <exception>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "paper_tables.hpp"
+#include "scale.hpp"
+#include "sweeps.hpp"
+
+namespace {
+
+std::string joinArguments(int argc, char** argv) {
+  std::ostringstream s;
+  for (int k = 0; k < argc; ++k) s << (k ? " " : "") << argv[k];
+  return s.str();
+}
+
+void addPaperCommand(CLI::App& app, eaci_bench::PaperOptions& o) {
+  CLI::App* cmd = app.add_subcommand("paper", "the paper's Tables 1-3 on its maps (corner cutting allowed)");
+  cmd->add_option("--maps", o.maps_dir, "directory with paper-20x20.txt ... paper-50x50.txt")->required();
+  cmd->add_option("--runs", o.runs, "seeds 1..runs per map and algorithm")->check(CLI::Range(1, 10000));
+  cmd->add_option("--out", o.out_dir, "output directory");
+  cmd->add_option("--threads", o.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--snapshots", o.snapshot_iterations, "iterations of the pheromone snapshots (0 = initial)")
+      ->delimiter(',');
+}
+
+void addSweepCommand(CLI::App& app, eaci_bench::SweepOptions& o) {
+  CLI::App* cmd = app.add_subcommand("sweep", "the paper's parameter studies (Figs 11-14) and ACO's rho");
+  cmd->add_option("--maps", o.maps_dir, "directory with the paper's maps")->required();
+  cmd->add_option("--runs", o.runs, "seeds 1..runs per value")->check(CLI::Range(1, 10000));
+  cmd->add_option("--out", o.out_dir, "output directory");
+  cmd->add_option("--threads", o.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--eaci-maps", o.eaci_maps, "paper maps for the EACI sweeps")->delimiter(',');
+  cmd->add_option("--strategies", o.strategies, "island strategies (paper, geodesic)")->delimiter(',');
+}
+
+void addScaleCommand(CLI::App& app, eaci_bench::ScaleOptions& o, std::vector<std::string>& kinds) {
+  CLI::App* cmd = app.add_subcommand("scale", "generated maps of growing size (corner cutting forbidden)");
+  cmd->add_option("--sizes", o.sizes, "map sizes (cells per side)")->delimiter(',')->check(CLI::Range(6, 4096));
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--runs", o.runs, "seeds per case (0 = 5 up to 400 cells, else 3)")->check(CLI::Range(0, 1000));
+  cmd->add_option("--out", o.out_dir, "output directory");
+  cmd->add_option("--budget-s", o.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--slow-run-s", o.slow_run_s, "a planner slower than this runs for the first seed only (s)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--early-stop", o.early_stop_iterations, "early_stop_iterations of the early-stopping EACI")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--example-max-size", o.example_max_size, "store maps and routes up to this size");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"eaci_bench: the EACI paper's benchmarks, parameter sweeps, and scaling"};
+  app.require_subcommand(1);
+  eaci_bench::PaperOptions paper;
+  eaci_bench::SweepOptions sweep;
+  eaci_bench::ScaleOptions scale;
+  std::vector<std::string> kinds;
+  addPaperCommand(app, paper);
+  addSweepCommand(app, sweep);
+  addScaleCommand(app, scale, kinds);
+  CLI11_PARSE(app, argc, argv);
+
+  const std::string command_line = joinArguments(argc, argv);
+  try {
+    if (app.got_subcommand("paper")) {
+      paper.command_line = command_line;
+      return eaci_bench::runPaperCommand(paper);
+    }
+    if (app.got_subcommand("sweep")) {
+      sweep.command_line = command_line;
+      return eaci_bench::runSweepCommand(sweep);
+    }
+    scale.command_line = command_line;
+    if (!kinds.empty()) {
+      scale.kinds.clear();
+      for (const std::string& text : kinds) {
+        eaci_bench::MapKind kind;
+        if (!eaci_bench::parseMapKind(text, kind)) throw std::invalid_argument("unknown map kind '" + text + "'");
+        scale.kinds.push_back(kind);
+      }
+    }
+    return eaci_bench::runScaleCommand(scale);
+  } catch (const std::exception& e) {
+    std::cerr << "\neaci_bench: error: " << e.what() << std::endl;
+    return 2;
+  }
+}

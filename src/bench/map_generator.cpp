@@ -1,0 +1,170 @@
+#include "map_generator.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "eaci/aco/random.hpp"
+#include "eaci/grid/binary_grid.hpp"
+#include "eaci/search/astar.hpp"
+
+namespace eaci_bench {
+
+namespace {
+
+constexpr int kRoomMin = 10, kRoomMax = 20;  // room width between walls
+constexpr int kDoorMin = 2, kDoorMax = 3;
+constexpr double kClutterMin = 0.20, kClutterMax = 0.30;  // obstacle fraction
+constexpr int kCornerKeepFree = 3;                        // free square at start and goal
+constexpr int kMaxAttempts = 100;
+
+// Uniform integers and reals from SplitMix64 (specified output, unlike std:: distributions).
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : rng_(seed ^ 0x6A09E667F3BCC909ULL) {}
+  int between(int lo, int hi) {  // inclusive
+    return lo + static_cast<int>(rng_.next() % static_cast<std::uint64_t>(hi - lo + 1));
+  }
+  double between(double lo, double hi) { return lo + (hi - lo) * rng_.uniform(); }
+
+ private:
+  eaci::SplitMix64 rng_;
+};
+
+class Canvas {
+ public:
+  explicit Canvas(int size) : size_(size), cells_(static_cast<std::size_t>(size) * size, eaci::kFreeValue) {}
+  int size() const { return size_; }
+  void set(int row, int col, bool obstacle) {
+    cells_[static_cast<std::size_t>(row) * size_ + col] = obstacle ? eaci::kOccupiedValue : eaci::kFreeValue;
+  }
+  bool isObstacle(int row, int col) const {
+    return cells_[static_cast<std::size_t>(row) * size_ + col] == eaci::kOccupiedValue;
+  }
+  std::vector<std::uint8_t> release() { return std::move(cells_); }
+
+ private:
+  int size_;
+  std::vector<std::uint8_t> cells_;
+};
+
+// Wall positions along one axis: rooms kRoomMin..kRoomMax wide, none closer than kRoomMin to the far edge.
+std::vector<int> wallLines(int size, Random& random) {
+  std::vector<int> walls;
+  for (int pos = random.between(kRoomMin, kRoomMax); pos <= size - 1 - kRoomMin;
+       pos += 1 + random.between(kRoomMin, kRoomMax))
+    walls.push_back(pos);
+  return walls;
+}
+
+// Spans [first, last] between consecutive walls (and the map edges).
+std::vector<std::pair<int, int>> spansBetween(const std::vector<int>& walls, int size) {
+  std::vector<std::pair<int, int>> spans;
+  int first = 0;
+  for (int wall : walls) {
+    spans.emplace_back(first, wall - 1);
+    first = wall + 1;
+  }
+  spans.emplace_back(first, size - 1);
+  return spans;
+}
+
+// One door, 2-3 cells wide, somewhere in [first, last] of a wall.
+std::pair<int, int> doorIn(std::pair<int, int> span, Random& random) {
+  const int width = std::min(random.between(kDoorMin, kDoorMax), span.second - span.first + 1);
+  const int begin = random.between(span.first, span.second - width + 1);
+  return {begin, begin + width - 1};
+}
+
+void drawRooms(Canvas& canvas, Random& random) {
+  const int n = canvas.size();
+  const std::vector<int> rows = wallLines(n, random), cols = wallLines(n, random);
+  for (int r : rows)
+    for (int c = 0; c < n; ++c) canvas.set(r, c, true);
+  for (int c : cols)
+    for (int r = 0; r < n; ++r) canvas.set(r, c, true);
+  // A door in every wall segment between two rooms: every room reaches every neighbour.
+  for (int r : rows)
+    for (const auto& span : spansBetween(cols, n)) {
+      const auto door = doorIn(span, random);
+      for (int c = door.first; c <= door.second; ++c) canvas.set(r, c, false);
+    }
+  for (int c : cols)
+    for (const auto& span : spansBetween(rows, n)) {
+      const auto door = doorIn(span, random);
+      for (int r = door.first; r <= door.second; ++r) canvas.set(r, c, false);
+    }
+}
+
+bool nearCorner(int row, int col, int n) {
+  const auto near = [&](int v, int corner) { return std::abs(v - corner) < kCornerKeepFree; };
+  return (near(row, 0) && near(col, 0)) || (near(row, n - 1) && near(col, n - 1));
+}
+
+void drawClutter(Canvas& canvas, Random& random) {
+  const int n = canvas.size();
+  const int max_side = std::max(4, n / 10);
+  const auto target = static_cast<long long>(random.between(kClutterMin, kClutterMax) * n * n);
+  long long blocked = 0;
+  while (blocked < target) {
+    const int h = random.between(2, max_side), w = random.between(2, max_side);
+    const int top = random.between(0, n - h), left = random.between(0, n - w);
+    for (int r = top; r < top + h; ++r)
+      for (int c = left; c < left + w; ++c) {
+        if (canvas.isObstacle(r, c) || nearCorner(r, c, n)) continue;
+        canvas.set(r, c, true);
+        ++blocked;
+      }
+  }
+}
+
+eaci::OccupancyMap toMap(Canvas& canvas) {
+  eaci::OccupancyMap map;
+  map.width = map.height = canvas.size();
+  map.cells = canvas.release();
+  return map;
+}
+
+double obstacleFraction(const eaci::OccupancyMap& map) {
+  const auto blocked = std::count(map.cells.begin(), map.cells.end(), eaci::kOccupiedValue);
+  return static_cast<double>(blocked) / static_cast<double>(map.cells.size());
+}
+
+}  // namespace
+
+const char* toString(MapKind kind) { return kind == MapKind::kRooms ? "rooms" : "clutter"; }
+
+bool parseMapKind(const std::string& text, MapKind& kind) {
+  if (text == "rooms") kind = MapKind::kRooms;
+  else if (text == "clutter") kind = MapKind::kClutter;
+  else return false;
+  return true;
+}
+
+GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed) {
+  if (size < 2 * kCornerKeepFree) throw std::runtime_error("map size must be at least 6");
+  for (int attempt = 0; attempt < kMaxAttempts; ++attempt) {
+    GeneratedMap g;
+    g.kind = kind;
+    g.size = size;
+    g.seed = seed;
+    g.seed_used = seed + static_cast<std::uint64_t>(attempt);
+    Random random(g.seed_used * 1000003ULL + static_cast<std::uint64_t>(size) * 2 + (kind == MapKind::kRooms ? 0 : 1));
+    Canvas canvas(size);
+    if (kind == MapKind::kRooms) drawRooms(canvas, random);
+    else drawClutter(canvas, random);
+    g.map = toMap(canvas);
+    g.start = eaci::Cell{0, 0};
+    g.goal = eaci::Cell{size - 1, size - 1};
+    g.obstacle_fraction = obstacleFraction(g.map);
+    const eaci::BinaryGrid grid = eaci::BinaryGrid::fromView(g.map.view(), false);
+    const eaci::ShortestPath shortest = eaci::shortestPath(grid, g.start, g.goal);
+    if (!shortest.found) continue;
+    g.optimum = shortest.length;
+    return g;
+  }
+  throw std::runtime_error(std::string("no connected ") + toString(kind) + " map of size " + std::to_string(size) +
+                           " in " + std::to_string(kMaxAttempts) + " seeds from " + std::to_string(seed));
+}
+
+}  // namespace eaci_bench

@@ -1,0 +1,38 @@
+// Seeded test maps for the scale benchmark, start at the top-left corner, goal at the
+// bottom-right, connected under the robot's move rule (no corner cutting):
+//   rooms   - a grid of rooms 10-20 cells wide, separated by 1-cell walls with a 2-3 cell
+//             door into every neighbouring room;
+//   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free.
+// A map whose start and goal are not connected (checked with A*) is drawn again with the
+// next seed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "eaci/grid/cell.hpp"
+#include "eaci/io/occupancy_map.hpp"
+
+namespace eaci_bench {
+
+enum class MapKind { kRooms, kClutter };
+
+const char* toString(MapKind kind);
+bool parseMapKind(const std::string& text, MapKind& kind);
+
+struct GeneratedMap {
+  eaci::OccupancyMap map;
+  MapKind kind = MapKind::kRooms;
+  int size = 0;
+  std::uint64_t seed = 0;       // the seed asked for
+  std::uint64_t seed_used = 0;  // the seed that gave a connected map
+  eaci::Cell start;
+  eaci::Cell goal;
+  double obstacle_fraction = 0.0;
+  double optimum = 0.0;         // A* length, corner cutting forbidden
+};
+
+// size x size cells. Throws std::runtime_error when 100 seeds in a row give no connected map.
+GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed);
+
+}  // namespace eaci_bench

@@ -1,0 +1,122 @@
+#include "provenance.hpp"
+
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace eaci_bench {
+
+namespace {
+
+// The repository this file was compiled from: two levels above src/bench/.
+std::string sourceRoot() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+}
+
+std::string runCommand(const std::string& command) {
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return out;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+  pclose(pipe);
+  return out;
+}
+
+std::string firstLine(const std::string& text) {
+  const std::string line = text.substr(0, text.find('\n'));
+  return line;
+}
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+double memoryGb() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0.0;
+  in >> key >> kb;
+  return kb / (1024.0 * 1024.0);
+}
+
+double loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double one_minute = 0.0;
+  in >> one_minute;
+  return one_minute;
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return text;
+}
+
+std::string compilerName() {
+#if defined(__clang__)
+  return std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  return std::string("g++ ") + __VERSION__;
+#else
+  return "unknown";
+#endif
+}
+
+}  // namespace
+
+Provenance collectProvenance(const std::string& command_line) {
+  Provenance p;
+  const std::string git = "git -C '" + sourceRoot() + "' ";
+  p.git_commit = firstLine(runCommand(git + "log -1 --format=%h 2>/dev/null"));
+  if (p.git_commit.empty()) p.git_commit = "unknown";
+  std::istringstream modified(runCommand(git + "status --porcelain -- include src/io 2>/dev/null"));
+  for (std::string line; std::getline(modified, line);)
+    if (line.size() > 3) p.modified_sources.push_back(line.substr(3));
+  p.compiler = compilerName();
+#ifdef NDEBUG
+  p.build_type = "optimised (NDEBUG)";
+#else
+  p.build_type = "assertions on (no NDEBUG)";
+#endif
+  p.cpu_model = cpuModel();
+  p.hardware_threads = std::thread::hardware_concurrency();
+  p.memory_gb = memoryGb();
+  p.date_utc = utcNow();
+  p.load_average = loadAverage();
+  p.command_line = command_line;
+  return p;
+}
+
+nlohmann::json toJson(const Provenance& p) {
+  return {{"git_commit", p.git_commit},         {"modified_solver_sources", p.modified_sources},
+          {"compiler", p.compiler},             {"build_type", p.build_type},
+          {"cpu_model", p.cpu_model},           {"hardware_threads", p.hardware_threads},
+          {"memory_gb", p.memory_gb},           {"date_utc", p.date_utc},
+          {"load_average_at_start", p.load_average},
+          {"command_line", p.command_line}};
+}
+
+std::string provenanceMarkdown(const Provenance& p) {
+  std::ostringstream s;
+  s << "Source `" << p.git_commit << "`";
+  if (!p.modified_sources.empty()) {
+    s << " with uncommitted changes to";
+    for (const std::string& f : p.modified_sources) s << " `" << f << "`";
+  }
+  s << "; " << p.compiler << ", " << p.build_type << "; " << p.cpu_model << ", " << p.hardware_threads
+    << " hardware threads, " << static_cast<int>(p.memory_gb + 0.5) << " GB; " << p.date_utc
+    << "; load average " << p.load_average << " when the run began.\n\n"
+    << "Command: `" << p.command_line << "`\n";
+  return s.str();
+}
+
+}  // namespace eaci_bench
