@@ -156,16 +156,17 @@ def plot_convergence(data, outdir):
                   for a in m["algorithms"])
         ax.set_ylim(m["astar"]["length"] * 0.97, min(top, m["astar"]["length"] * 1.6) * 1.02)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8, loc="upper right")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=9, frameon=False)
     fig.suptitle("Convergence, median run of each planner (thick: best so far; thin: best of the iteration)",
                  fontsize=12)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
     save(fig, outdir, "convergence.png")
 
 
 def plot_convergence_time(data, outdir):
     maps = [m for m in data["maps"] if m["paper"]["eaci"]]
-    fig, axes = map_axes(maps)
+    fig, axes = map_axes(maps, width=6.0, height=5.2)
     for ax, m in zip(axes, maps):
         for a in m["algorithms"]:
             style = ALGORITHM_STYLE[a["key"]]
@@ -179,7 +180,7 @@ def plot_convergence_time(data, outdir):
         ax.set_ylabel("best route length so far")
         ax.set_ylim(m["astar"]["length"] * 0.98, m["astar"]["length"] * 1.45)
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=7.5, loc="upper right")
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)
     fig.suptitle("Best route so far against wall time (median run)", fontsize=12)
     fig.tight_layout()
     save(fig, outdir, "convergence_time.png")
@@ -187,7 +188,7 @@ def plot_convergence_time(data, outdir):
 
 def plot_lost_ants(data, outdir):
     maps = data["maps"]
-    fig, axes = map_axes(maps)
+    fig, axes = map_axes(maps, width=5.6, height=4.6)
     for ax, m in zip(axes, maps):
         for a in m["algorithms"]:
             style = ALGORITHM_STYLE[a["key"]]
@@ -202,8 +203,8 @@ def plot_lost_ants(data, outdir):
         ax.set_xlim(1, 100)
         ax.set_ylim(0, 51)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8, loc="upper right")
-    fig.suptitle("Lost ants per iteration", fontsize=12)
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
+    fig.suptitle("Lost ants per iteration (totals per run in brackets)", fontsize=12)
     fig.tight_layout()
     save(fig, outdir, "lost_ants.png")
 
@@ -432,8 +433,8 @@ def plot_scale_examples(data, outdir):
 
 def plot_scale(data, outdir):
     all_keys = list(SCALE_STYLE)
-    scale_panels(data, "Time per plan against map size", "wall time per plan (ms)",
-                 lambda v: v["summary"]["avg_time_ms"], all_keys, outdir, "scale_time.png")
+    scale_panels(data, "Time per plan against map size (median over the seeds)", "wall time per plan (ms)",
+                 lambda v: v["summary"]["median_time_ms"], all_keys, outdir, "scale_time.png")
 
     def gap(v):
         return v["avg_gap_pct"] if v["summary"]["successes"] > 0 else None

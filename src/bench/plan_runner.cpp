@@ -67,6 +67,7 @@ RunRecord timedPlan(const PlanRequest& request) {
   run.iteration_end_ms = std::move(iteration_end_ms);
   const auto best = static_cast<std::size_t>(std::max(run.iterations_to_converge, 0));
   run.time_to_best_ms = best >= 1 && best <= run.iteration_end_ms.size() ? run.iteration_end_ms[best - 1] : total_ms;
+  run.first_iteration_ms = run.iteration_end_ms.empty() ? total_ms : run.iteration_end_ms.front();
   return run;
 }
 

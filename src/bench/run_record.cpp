@@ -53,6 +53,7 @@ nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path) {
       {"time_ms", run.time_ms},
       {"cpu_ms", run.cpu_ms},
       {"time_to_best_ms", run.time_to_best_ms},
+      {"first_iteration_ms", run.first_iteration_ms},
   };
   if (with_curves) {
     j["best_length_so_far"] = numbers(run.best_length_so_far);
@@ -81,6 +82,7 @@ RunRecord runRecordFromJson(const nlohmann::json& j) {
   run.time_ms = j.at("time_ms").get<double>();
   run.cpu_ms = j.at("cpu_ms").get<double>();
   run.time_to_best_ms = j.at("time_to_best_ms").get<double>();
+  run.first_iteration_ms = j.at("first_iteration_ms").get<double>();
   if (j.contains("best_length_so_far")) {
     run.best_length_so_far = numbersFrom(j.at("best_length_so_far"));
     run.iteration_best_length = numbersFrom(j.at("iteration_best_length"));

@@ -24,6 +24,7 @@ struct RunRecord {
   double time_ms = 0.0;            // wall time around eaci::plan()
   double cpu_ms = 0.0;             // CPU time of the process (all its threads) around eaci::plan()
   double time_to_best_ms = 0.0;    // wall time until the iteration that found the final route ended
+  double first_iteration_ms = 0.0; // wall time until the first iteration ended (set-up included)
   std::vector<double> best_length_so_far;
   std::vector<double> iteration_best_length;
   std::vector<int> lost_ants_per_iteration;

@@ -22,6 +22,7 @@ struct EarlyStopComparison {
   double length_cost_pct = 0.0;   // mean of early length / full length - 1
   double early_gap_pct = 0.0;     // mean gap of the early-stopped route to A*
   double early_iterations = 0.0;  // iterations run before stopping
+  double first_iteration_ms = 0.0;  // set-up and the first iteration (mean over the early-stopped runs)
 };
 
 EarlyStopComparison compareEarlyStop(const ScaleCase& c, const std::string& full_key, const std::string& early_key);
