@@ -30,25 +30,42 @@ class InversePower {
     if (beta >= 0 && beta <= 12 && beta == std::floor(beta)) whole_ = static_cast<int>(beta);
   }
   double operator()(double x) const {
+    double y = x;
+    applyInPlace(&y, 1);
+    return y;
+  }
+
+  // x[k] <- x[k]^-beta for k < n; the dispatch on beta sits outside the loop so the loop
+  // body is straight-line arithmetic the compiler can vectorise.
+  void applyInPlace(double* x, int n) const {
     switch (whole_) {
-      case 0: return 1.0;
-      case 1: return 1.0 / x;
-      case 2: return 1.0 / power<2>(x);
-      case 3: return 1.0 / power<3>(x);
-      case 4: return 1.0 / power<4>(x);
-      case 5: return 1.0 / power<5>(x);
-      case 6: return 1.0 / power<6>(x);
-      case 7: return 1.0 / power<7>(x);
-      case 8: return 1.0 / power<8>(x);
-      case 9: return 1.0 / power<9>(x);
-      case 10: return 1.0 / power<10>(x);
-      case 11: return 1.0 / power<11>(x);
-      case 12: return 1.0 / power<12>(x);
-      default: return std::pow(x, -beta_);
+      case 0: fill(x, n); break;
+      case 1: apply<1>(x, n); break;
+      case 2: apply<2>(x, n); break;
+      case 3: apply<3>(x, n); break;
+      case 4: apply<4>(x, n); break;
+      case 5: apply<5>(x, n); break;
+      case 6: apply<6>(x, n); break;
+      case 7: apply<7>(x, n); break;
+      case 8: apply<8>(x, n); break;
+      case 9: apply<9>(x, n); break;
+      case 10: apply<10>(x, n); break;
+      case 11: apply<11>(x, n); break;
+      case 12: apply<12>(x, n); break;
+      default:
+        for (int k = 0; k < n; ++k) x[k] = std::pow(x[k], -beta_);
     }
   }
 
  private:
+  static void fill(double* x, int n) {
+    for (int k = 0; k < n; ++k) x[k] = 1.0;
+  }
+  template <int N>
+  static void apply(double* x, int n) {
+    for (int k = 0; k < n; ++k) x[k] = 1.0 / power<N>(x[k]);
+  }
+  // x^N by squaring: depth ceil(log2 N) + popcount(N) - 1 multiplications.
   template <int N>
   static double power(double x) {
     if constexpr (N == 1) return x;
@@ -117,15 +134,20 @@ struct WalkSetup {
     }
   }
 
-  // eta_ij^beta of Eq. 9 (sigma = 0) or Eq. 16-17, for the move in direction `dir` from cell
-  // `from` (grid index `from_index`).
-  double heuristicWeight(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
+  // d_jg + sigma, the quantity Eq. 9 (sigma = 0) and Eq. 16-17 invert, for the move in
+  // direction `dir` from cell `from` (grid index `from_index`).
+  double heuristicDistance(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
     const double distance =
         distance_table.empty()
             ? distanceToWaypoint(step(from, dir), target)
             : distance_table[target][static_cast<std::size_t>(static_cast<std::ptrdiff_t>(from_index) + index_step[dir])];
-    return eta_power(distance + sigma);
+    return distance + sigma;
+  }
+
+  // eta_ij^beta of Eq. 9 or Eq. 16-17: (d_jg + sigma)^-beta.
+  double heuristicWeight(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
+    return eta_power(heuristicDistance(from, from_index, target, previous_dir, dir));
   }
 };
 
@@ -150,7 +172,8 @@ class AntWalker {
       const std::uint8_t allowed = setup.moves[current];
       int count = 0;
       int chosen = -1;
-      double total = 0.0;
+      // Eq. 8 numerator tau^alpha * eta^beta, in three passes: gather the allowed moves,
+      // raise their heuristic distances to -beta together, multiply.
       for (int d = 0; d < kDirections; ++d) {
         if (!(allowed & (1u << d))) continue;
         const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(current) + setup.index_step[d]);
@@ -161,13 +184,17 @@ class AntWalker {
           break;
         }
         if (waypoint >= 0) continue;  // another island: not on this leg
-        // Eq. 8 numerator: tau^alpha * eta^beta
-        const double weight =
-            setup.pheromone->weight(current, d) * setup.heuristicWeight(here, current, target, previous_dir, d);
         candidate_dirs_[count] = d;
-        candidate_weights_[count] = weight;
-        total += weight;
+        candidate_weights_[count] = setup.heuristicDistance(here, current, target, previous_dir, d);
         ++count;
+      }
+      double total = 0.0;
+      if (chosen < 0 && count > 0) {
+        setup.eta_power.applyInPlace(candidate_weights_.data(), count);
+        for (int k = 0; k < count; ++k) {
+          candidate_weights_[k] *= setup.pheromone->weight(current, candidate_dirs_[k]);
+          total += candidate_weights_[k];
+        }
       }
       if (chosen < 0) {
         if (count == 0) return;  // deadlock: a lost ant

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -12,6 +13,7 @@
 #include "eaci/aco/ant_walk.hpp"
 #include "eaci/aco/parameters.hpp"
 #include "eaci/aco/pheromone_update.hpp"
+#include "eaci/aco/worker_group.hpp"
 
 namespace eaci {
 
@@ -48,7 +50,8 @@ class Colony {
   Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se)
       : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
         routes_(static_cast<std::size_t>(params.ants)),
-        walkers_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))) {}
+        walkers_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))),
+        scratch_routes_(walkers_.size()), workers_(static_cast<int>(walkers_.size())) {}
 
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
     ColonyRun run;
@@ -73,31 +76,23 @@ class Colony {
   }
 
  private:
-  // Ants of one iteration read the same pheromone and each has its own random stream,
-  // so splitting them over threads cannot change the result.
+  // Ants of one iteration read the same pheromone and each has its own random stream and
+  // route slot, so which worker walks which ant cannot change the result.
   void walkAllAnts(int iteration) {
     const int ants = params_.ants;
-    const int threads = static_cast<int>(walkers_.size());
-    auto walk_range = [&](int worker, int first, int last) {
-      for (int k = first; k < last; ++k) {
+    std::atomic<int> next_ant{0};
+    workers_.run([&](int worker) {
+      AntWalker& walker = walkers_[static_cast<std::size_t>(worker)];
+      AntRoute& scratch = scratch_routes_[static_cast<std::size_t>(worker)];
+      for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < ants;
+           k = next_ant.fetch_add(1, std::memory_order_relaxed)) {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
-        walkers_[static_cast<std::size_t>(worker)].walk(setup_, rng, routes_[static_cast<std::size_t>(k)]);
+        // Walk into the worker's own route, then swap it into the ant's slot: neighbouring
+        // slots belong to other workers, and writing them step by step would share cache lines.
+        walker.walk(setup_, rng, scratch);
+        std::swap(scratch, routes_[static_cast<std::size_t>(k)]);
       }
-    };
-    if (threads <= 1) {
-      walk_range(0, 0, ants);
-      return;
-    }
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(threads - 1));
-    const int per_thread = (ants + threads - 1) / threads;
-    for (int t = 1; t < threads; ++t) {
-      const int first = std::min(ants, t * per_thread);
-      const int last = std::min(ants, first + per_thread);
-      pool.emplace_back(walk_range, t, first, last);
-    }
-    walk_range(0, 0, std::min(ants, per_thread));
-    for (std::thread& worker : pool) worker.join();
+    });
   }
 
   // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so far.
@@ -147,7 +142,9 @@ class Colony {
   UpdateRule update_;
   double d_se_;
   std::vector<AntRoute> routes_;
-  std::vector<AntWalker> walkers_;
+  std::vector<AntWalker> walkers_;  // one per worker: each reuses its own memory
+  std::vector<AntRoute> scratch_routes_;
+  WorkerGroup workers_;
   int best_ = -1;
   int worst_ = -1;
 };
