@@ -37,9 +37,8 @@ void walkSetupFor(eaci::IslandStrategy strategy, benchmark::State& state,
   p.island_strategy = strategy;
   eaci::IslandPlan islands = eaci::planIslands(f.grid, f.start, f.goal, p);
   eaci::PheromoneField field = eaci::initialIslandPheromone(f.grid, islands.islands, p.lambda, p.alpha);
-  eaci::WalkSetup setup(f.grid, field, islands.islands, eaci::HeuristicRule::kTurningAware, p.beta, p.epsilon);
-  setup.leg_distance = std::move(islands.leg_distance);
-  setup.tabulateDistances();
+  const eaci::WalkSetup setup(f.grid, field, islands.islands, eaci::HeuristicRule::kTurningAware, p.beta, p.epsilon,
+                              std::move(islands.leg_distance));
   for (auto _ : state) body(setup, field);
 }
 

@@ -98,9 +98,9 @@ struct WalkSetup {
   static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
 
   WalkSetup(const BinaryGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
-            double beta, double epsilon)
+            double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
       : grid(&g), pheromone(&field), waypoints(std::move(points)), waypoint_of_cell(g.cellCount(), -1),
-        heuristic(rule), eta_power(beta), moves(g.cellCount(), 0) {
+        leg_distance(std::move(leg_distances)), heuristic(rule), eta_power(beta), moves(g.cellCount(), 0) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
       waypoint_of_cell[g.index(waypoints[w])] = static_cast<std::int32_t>(w);
     if (rule == HeuristicRule::kTurningAware)

@@ -49,10 +49,8 @@ inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, con
   result.waypoints = islands.islands;
   result.pheromone = initialIslandPheromone(grid, result.waypoints, params.lambda, params.alpha);
   if (observer) observer(0, result.pheromone);
-  WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
-                  params.epsilon);
-  setup.leg_distance = std::move(islands.leg_distance);
-  setup.tabulateDistances();
+  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
+                        params.epsilon, std::move(islands.leg_distance));
   Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
   result.run = colony.run(should_stop, observer);
   return result;
