@@ -29,7 +29,7 @@ DPI = 110
 ALGORITHM_STYLE = {
     "astar": {"color": "0.45", "label": "A* (optimum)", "ls": "--"},
     "aco": {"color": "tab:red", "label": "classic ACO", "ls": "-"},
-    "aco-paperlike": {"color": "tab:orange", "label": "classic ACO, τ0 800, ρ 0.1", "ls": "-"},
+    "aco-strong": {"color": "tab:orange", "label": "classic ACO, τ0 1, ρ 0.3", "ls": "-"},
     "eaci-paper": {"color": "tab:blue", "label": "EACI, paper islands", "ls": "-"},
     "eaci-geodesic": {"color": "tab:green", "label": "EACI, geodesic islands", "ls": "-"},
 }
