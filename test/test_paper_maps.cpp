@@ -150,3 +150,30 @@ TEST(PaperMaps, EaciLosesFewerAntsThanClassicAco) {
   }
   EXPECT_LT(eaci_lost, aco_lost);
 }
+
+TEST(PaperMaps, ClassicAcoDefaultsSitWithinAFactorTwoOfThePapersAcoRow) {
+  // The paper's ACO rows (Tables 1-3): average iterations and average lost ants per run.
+  const double paper_iterations[] = {40.5, 77.1, 100, 100};
+  const double paper_lost[] = {1246, 3112, 3994, 3989};
+  const auto& cases = eaci::test::paperCases();
+  for (std::size_t m = 0; m < cases.size(); ++m) {
+    const BinaryGrid grid = eaci::test::paperMap(cases[m].file, true);
+    double iterations = 0.0, lost = 0.0;
+    constexpr int kRuns = 20;
+    for (std::uint64_t seed = 1; seed <= kRuns; ++seed) {
+      eaci::Parameters p;  // the defaults: tau0 = 800, rho = 0.1, the paper's m, Nc_max, alpha, beta, Q
+      p.allow_corner_cutting = true;
+      p.seed = seed;
+      const auto r = eaci::plan(grid, cases[m].start, cases[m].goal, Algorithm::kAco, p);
+      ASSERT_TRUE(r.success()) << cases[m].file << " seed " << seed << ": " << r.error;
+      iterations += r.iterations_to_converge;
+      lost += static_cast<double>(r.lost_ants_total);
+    }
+    iterations /= kRuns;
+    lost /= kRuns;
+    EXPECT_GE(iterations, paper_iterations[m] / 2) << cases[m].file;
+    EXPECT_LE(iterations, paper_iterations[m] * 2) << cases[m].file;
+    EXPECT_GE(lost, paper_lost[m] / 2) << cases[m].file;
+    EXPECT_LE(lost, paper_lost[m] * 2) << cases[m].file;
+  }
+}
