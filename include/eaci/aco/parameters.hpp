@@ -42,7 +42,7 @@ struct Parameters {
   double aco_tau0 = 800.0;
   bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
-  double island_spacing_max = 10.0;  // geodesic islands: at most this many cells apart (0 = r_s only)
+  double island_spacing_max = 6.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
