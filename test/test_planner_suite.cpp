@@ -215,6 +215,26 @@ TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {
   EXPECT_EQ(r.iterations_run, 3);
 }
 
+TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
+  // A stop check that is true from the start: asked between the set-up steps, it ends the
+  // plan before any ant walks, even with the pheromone picture asked for.
+  const BinaryGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
+  eaci::PlanOptions options;
+  options.record_pheromone = true;
+  int asked = 0;
+  options.should_stop = [&asked](int) {
+    ++asked;
+    return true;
+  };
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, eaci::Parameters{}, options);
+  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(r.iterations_run, 0);
+  EXPECT_EQ(asked, 1);  // right after the islands
+  EXPECT_TRUE(r.pheromone.empty());
+  EXPECT_NE(r.error.find("stopped"), std::string::npos) << r.error;
+}
+
 TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
   const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   eaci::Parameters p;

@@ -112,7 +112,7 @@ inline void fillFromColony(const BinaryGrid& grid, const ColonyResult& colony, c
   r.iteration_best_length = colony.run.iteration_best_length;
   r.best_length_so_far = colony.run.best_length_so_far;
   for (std::uint32_t index : colony.run.best_cells) r.path.push_back(grid.cellAt(index));
-  if (options.record_pheromone) {
+  if (options.record_pheromone && colony.pheromone.cellCount() == grid.cellCount()) {
     r.pheromone.resize(grid.cellCount());
     for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) r.pheromone[cell] = colony.pheromone.strongestFrom(cell);
   }
@@ -162,13 +162,16 @@ inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm 
   }
   if (r.path.empty()) {
     r.status = PlanStatus::kNoPath;
-    r.error = algorithm == Algorithm::kAStar
-                  ? "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start)
-                  : "no ant reached the goal in " + std::to_string(r.iterations_run) +
-                        " iterations although a route exists" +
-                        (algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kPaper
-                             ? " (the paper's islands can sit in dead ends; island_strategy=geodesic avoids them)"
-                             : "");
+    if (algorithm == Algorithm::kAStar)
+      r.error = "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start);
+    else if (r.interrupted)
+      r.error = "stopped (should_stop) after " + std::to_string(r.iterations_run) +
+                " iterations, before any ant reached the goal";
+    else
+      r.error = "no ant reached the goal in " + std::to_string(r.iterations_run) + " iterations although a route exists" +
+                (algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kPaper
+                     ? " (the paper's islands can sit in dead ends; island_strategy=geodesic avoids them)"
+                     : "");
     return r;
   }
   r.status = PlanStatus::kSuccess;
