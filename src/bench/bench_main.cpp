@@ -1,6 +1,7 @@
 // eaci_bench: reproduces the paper's Tables 1-3 (`paper`), its parameter studies and the
 // classic ACO evaporation study (`sweep`), and measures speed and memory on generated maps
-// of growing size (`scale`). Each command writes JSON, CSV and Markdown into --out.
+// of growing size (`scale`), and how closely a planning-time limit is kept (`deadline`).
+// Each command writes JSON, CSV and Markdown into --out.
 
 #include <exception>
 #include <iostream>
@@ -10,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "deadline.hpp"
 #include "paper_tables.hpp"
 #include "scale.hpp"
 #include "sweeps.hpp"
@@ -56,6 +58,29 @@ void addScaleCommand(CLI::App& app, eaci_bench::ScaleOptions& o, std::vector<std
   cmd->add_option("--example-max-size", o.example_max_size, "store maps and routes up to this size");
 }
 
+void addDeadlineCommand(CLI::App& app, eaci_bench::DeadlineOptions& o, std::vector<std::string>& kinds) {
+  CLI::App* cmd = app.add_subcommand("deadline", "wall time of a plan against its time limit (max_planning_time)");
+  cmd->add_option("--sizes", o.sizes, "map sizes (cells per side)")->delimiter(',')->check(CLI::Range(6, 4096));
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--limits-s", o.limits_s, "time limits (s)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--runs", o.runs, "map seeds per kind and size")->check(CLI::Range(1, 1000));
+  cmd->add_option("--threads", o.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--out", o.out_dir, "output directory");
+}
+
+// Map kinds named on the command line, or the defaults when none were.
+std::vector<eaci_bench::MapKind> parseKinds(const std::vector<std::string>& texts,
+                                            std::vector<eaci_bench::MapKind> defaults) {
+  if (texts.empty()) return defaults;
+  std::vector<eaci_bench::MapKind> kinds;
+  for (const std::string& text : texts) {
+    eaci_bench::MapKind kind;
+    if (!eaci_bench::parseMapKind(text, kind)) throw std::invalid_argument("unknown map kind '" + text + "'");
+    kinds.push_back(kind);
+  }
+  return kinds;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,10 +89,12 @@ int main(int argc, char** argv) {
   eaci_bench::PaperOptions paper;
   eaci_bench::SweepOptions sweep;
   eaci_bench::ScaleOptions scale;
+  eaci_bench::DeadlineOptions deadline;
   std::vector<std::string> kinds;
   addPaperCommand(app, paper);
   addSweepCommand(app, sweep);
   addScaleCommand(app, scale, kinds);
+  addDeadlineCommand(app, deadline, kinds);
   CLI11_PARSE(app, argc, argv);
 
   const std::string command_line = joinArguments(argc, argv);
@@ -80,15 +107,13 @@ int main(int argc, char** argv) {
       sweep.command_line = command_line;
       return eaci_bench::runSweepCommand(sweep);
     }
-    scale.command_line = command_line;
-    if (!kinds.empty()) {
-      scale.kinds.clear();
-      for (const std::string& text : kinds) {
-        eaci_bench::MapKind kind;
-        if (!eaci_bench::parseMapKind(text, kind)) throw std::invalid_argument("unknown map kind '" + text + "'");
-        scale.kinds.push_back(kind);
-      }
+    if (app.got_subcommand("deadline")) {
+      deadline.command_line = command_line;
+      deadline.kinds = parseKinds(kinds, deadline.kinds);
+      return eaci_bench::runDeadlineCommand(deadline);
     }
+    scale.command_line = command_line;
+    scale.kinds = parseKinds(kinds, scale.kinds);
     return eaci_bench::runScaleCommand(scale);
   } catch (const std::exception& e) {
     std::cerr << "\neaci_bench: error: " << e.what() << std::endl;
