@@ -6,6 +6,7 @@
 #include "eaci/io/map_io.hpp"
 
 #include <stb_image.h>
+#include <yaml-cpp/depthguard.h>  // YAML::DeepRecursion (yaml-cpp 0.7)
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -610,6 +611,9 @@ class YamlMapReader {
 YAML::Node parseYamlDocument(const std::string& text, const std::string& yaml_path) {
   try {
     return YAML::Load(text);
+  } catch (const YAML::DeepRecursion&) {
+    // yaml-cpp 0.7 reports its nesting limit as "error at line 1, column 1: bad file".
+    fail(yaml_path, "invalid YAML: nested more deeply than the YAML reader allows");
   } catch (const YAML::Exception& error) {
     fail(yaml_path, std::string("invalid YAML: ") + error.what());
   }
