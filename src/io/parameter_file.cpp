@@ -4,7 +4,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
-#include <iterator>
 
 namespace eaci {
 namespace {
