@@ -6,6 +6,7 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <future>
@@ -14,6 +15,7 @@
 #include <thread>
 
 #include "eaci/io/map_io.hpp"
+#include "grid_planner.hpp"
 #include "route_check.hpp"
 
 namespace {
@@ -177,6 +179,33 @@ TEST_F(PlannerCancel, ConcurrentPlansRunOneAtATimeAndEachCanBeCancelled) {
   const auto after = planInBackground(kShort);
   ASSERT_EQ(after.wait_for(std::chrono::seconds(60)), std::future_status::ready);
   EXPECT_FALSE(after.get().plan.poses.empty());
+}
+
+// planOnGrid itself (what the node and the plugin call), in this process: ROS is up here, so only
+// the cancel flag stops the colony. Cancelled before the first iteration, no ant has arrived.
+TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
+  std::string file;
+  ASSERT_TRUE(ros::param::get("~map_file", file));
+  const nav_msgs::OccupancyGrid grid = eaci_ros::toOccupancyGrid(eaci::loadMap(file), "map");
+  const eaci::GridView view = eaci_ros::viewOf(grid, 65, true);
+  eaci_ros::RosPlannerOptions options;
+  options.max_planning_time = 0;
+  eaci::Parameters params;
+  std::atomic<bool> cancel{true};
+  const auto cancelled =
+      eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params, options, &cancel);
+  EXPECT_FALSE(cancelled.ok);
+  EXPECT_TRUE(cancelled.path.poses.empty());
+  EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
+  EXPECT_EQ(cancelled.result.iterations_run, 0);
+  EXPECT_NE(cancelled.error.find("cancelled after 0 iterations, before any ant reached the goal"), std::string::npos)
+      << cancelled.error;
+  cancel = false;
+  const auto planned =
+      eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params, options, &cancel);
+  EXPECT_TRUE(planned.ok) << planned.error;
+  EXPECT_EQ(planned.stopped_by, eaci_ros::StopReason::kNone);
+  EXPECT_EQ(planned.result.iterations_run, params.max_iterations);
 }
 
 int main(int argc, char** argv) {
