@@ -6,6 +6,7 @@
 #include "eaci/io/map_io.hpp"
 
 #include <stb_image.h>
+#include <yaml-cpp/depthguard.h>  // YAML::DeepRecursion (yaml-cpp 0.7)
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -340,6 +341,28 @@ void checkBmpPixelData(const std::string& bytes, int width, int height, const st
   }
 }
 
+// The most pixels a complete file of each compressed format can hold per byte of the file.
+// PNG: deflate expands at most 1032-fold and a pixel takes at least one bit (8 x 1032).
+// GIF: an LZW code takes at least one bit and stands for at most 4096 pixels (8 x 4096).
+// stb_image allocates the declared size before it decodes, and fills what the data leave out
+// with the background colour (GIF), so a 35-byte GIF declaring 8192 x 8192 pixels decoded to
+// a 64-million-cell map using about 0.7 GB; such sizes are refused from the header alone.
+// Uncompressed BMP is checked exactly by checkBmpPixelData.
+constexpr std::uint64_t kMaxPngPixelsPerByte = 8 * 1032;
+constexpr std::uint64_t kMaxGifPixelsPerByte = 8 * 4096;
+
+void checkDeclaredSizeIsPlausible(const std::string& bytes, std::size_t cells, int width, int height,
+                                  const std::string& source) {
+  const bool png = startsWith(bytes, "\x89PNG\r\n\x1a\n", 8), gif = startsWith(bytes, "GIF8", 4);
+  if (!png && !gif) return;
+  const std::uint64_t per_byte = png ? kMaxPngPixelsPerByte : kMaxGifPixelsPerByte;
+  if (cells <= bytes.size() * per_byte) return;  // no overflow: the file has at most INT_MAX bytes
+  fail(source, std::string("cannot decode image: the ") + (png ? "PNG" : "GIF") + " header declares " +
+                   std::to_string(width) + " x " + std::to_string(height) + " pixels, more than a file of " +
+                   std::to_string(bytes.size()) + " bytes can hold (at most " + std::to_string(per_byte) +
+                   " pixels per byte); refused before decoding");
+}
+
 std::string stbFailureReason() {
   const char* reason = stbi_failure_reason();
   return std::string("cannot decode image: ") + (reason != nullptr ? reason : "unknown error");
@@ -364,6 +387,7 @@ GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source
   if (width <= 0 || height <= 0) fail(source, "image has no pixels");
   const std::size_t cells = checkedCellCount(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height),
                                              source);
+  checkDeclaredSizeIsPlausible(bytes, cells, width, height, source);
   if (startsWith(bytes, "BM", 2)) checkBmpPixelData(bytes, width, height, source);
 
   stbi_set_flip_vertically_on_load_thread(0);  // row 0 must stay the top row
@@ -587,6 +611,9 @@ class YamlMapReader {
 YAML::Node parseYamlDocument(const std::string& text, const std::string& yaml_path) {
   try {
     return YAML::Load(text);
+  } catch (const YAML::DeepRecursion&) {
+    // yaml-cpp 0.7 reports its nesting limit as "error at line 1, column 1: bad file".
+    fail(yaml_path, "invalid YAML: nested more deeply than the YAML reader allows");
   } catch (const YAML::Exception& error) {
     fail(yaml_path, std::string("invalid YAML: ") + error.what());
   }

@@ -36,6 +36,11 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   plan_pub_ = private_nh.advertise<nav_msgs::Path>("plan", 1);
   pheromone_pub_ = private_nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
   make_plan_service_ = private_nh.advertiseService("make_plan", &EaciGlobalPlanner::onMakePlan, this);
+  ros::NodeHandle cancel_nh("~/" + name);
+  cancel_nh.setCallbackQueue(&cancel_queue_);
+  cancel_service_ = cancel_nh.advertiseService("cancel", &EaciGlobalPlanner::onCancel, this);
+  cancel_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &cancel_queue_);
+  cancel_spinner_->start();
   initialized_ = true;
   ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s",
            name.c_str(), eaci::toString(options_.algorithm), params_.ants, params_.max_iterations, params_.islands,
@@ -64,6 +69,8 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     }
   }
 
+  std::lock_guard<std::mutex> one_at_a_time(plan_mutex_);
+  const eaci_ros::PlanCancellation::Scope in_progress(cancellation_);
   costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
   eaci_ros::GridPlan result;
   eaci_ros::MapFrame map_frame;
@@ -81,12 +88,15 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     costs.unknown = options_.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
-    result = eaci_ros::planOnGrid(view, map_frame, start, goal, tolerance, params_, options_);
+    result = eaci_ros::planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
   }
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
     return false;
   }
+  if (result.stopped_by != eaci_ros::StopReason::kNone)
+    ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning the best route so far", name_.c_str(),
+             eaci_ros::toString(result.stopped_by), result.result.iterations_run);
   plan = result.path.poses;
   if (options_.publish_plan) plan_pub_.publish(result.path);
   if (options_.visualize_pheromone && !result.result.pheromone.empty())
@@ -103,6 +113,15 @@ bool EaciGlobalPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs
   planWithTolerance(start, goal, tolerance, response.plan.poses);
   response.plan.header.frame_id = frame;
   response.plan.header.stamp = ros::Time::now();
+  return true;
+}
+
+bool EaciGlobalPlanner::onCancel(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  response.success = cancellation_.cancel();
+  response.message = response.success
+                         ? "cancelling the plan in progress: it stops at its next iteration with the best route so far"
+                         : "no plan in progress";
+  ROS_INFO("EaciGlobalPlanner %s: cancel: %s", name_.c_str(), response.message.c_str());
   return true;
 }
 

@@ -7,12 +7,17 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_core/base_global_planner.h>
 #include <nav_msgs/GetPlan.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <std_srvs/Trigger.h>
 
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "eaci/aco/parameters.hpp"
+#include "plan_cancellation.hpp"
 #include "ros_parameters.hpp"
 
 namespace eaci_planner {
@@ -23,12 +28,16 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros);
 
   // Reads the parameters under ~<name>/ (see ros_parameters.hpp), advertises ~<name>/plan,
-  // ~<name>/pheromone and the ~<name>/make_plan service.
+  // ~<name>/pheromone and the ~<name>/make_plan and ~<name>/cancel services. ~cancel
+  // (std_srvs/Trigger) stops the plan in progress at its next iteration with the best route so
+  // far; it has a callback queue and a thread of its own, so it is answered while the host's
+  // spinner threads plan.
   void initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) override;
 
   // false with a ROS_ERROR / ROS_WARN naming the reason: not initialised, a pose in another
   // frame, start or goal off the costmap, in an obstacle (the goal beyond default_tolerance),
-  // or no route (within max_planning_time).
+  // or no route (within max_planning_time, before ~cancel or before ROS shut down). Plans run one
+  // at a time (move_base's planner thread and the ~make_plan service may ask together).
   bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                 std::vector<geometry_msgs::PoseStamped>& plan) override;
 
@@ -36,6 +45,7 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   bool planWithTolerance(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                          double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
+  bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
   bool initialized_ = false;
   std::string name_;
@@ -45,6 +55,11 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   ros::Publisher plan_pub_;
   ros::Publisher pheromone_pub_;
   ros::ServiceServer make_plan_service_;
+  std::mutex plan_mutex_;
+  eaci_ros::PlanCancellation cancellation_;
+  ros::CallbackQueue cancel_queue_;
+  std::unique_ptr<ros::AsyncSpinner> cancel_spinner_;
+  ros::ServiceServer cancel_service_;
 };
 
 }  // namespace eaci_planner

@@ -1,5 +1,7 @@
 #include "grid_planner.hpp"
 
+#include <ros/ros.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -20,9 +22,19 @@ GridPlan failed(const std::string& error) {
 
 }  // namespace
 
+const char* toString(StopReason reason) {
+  switch (reason) {
+    case StopReason::kNone: return "not stopped";
+    case StopReason::kTimeLimit: return "max_planning_time ran out";
+    case StopReason::kCancelled: return "cancelled";
+    case StopReason::kShutdown: return "ROS is shutting down";
+  }
+  return "?";
+}
+
 GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
                     const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
-                    const RosPlannerOptions& options) {
+                    const RosPlannerOptions& options, const std::atomic<bool>* cancel) {
   if (view.empty()) return failed("the map is empty");
   const auto start_cell = cellAt(frame, start.pose.position.x, start.pose.position.y);
   if (!start_cell) return failed("start " + where(start) + " is off the map");
@@ -39,14 +51,28 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
 
   eaci::PlanOptions plan_options;
   plan_options.record_pheromone = options.visualize_pheromone;
-  if (options.max_planning_time > 0) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.max_planning_time);
-    plan_options.should_stop = [deadline](int) { return std::chrono::steady_clock::now() >= deadline; };
-  }
+  const bool timed = options.max_planning_time > 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timed ? options.max_planning_time : 0.0);
+  StopReason stopped_by = StopReason::kNone;
+  // Asked by the colony between iterations, in this thread.
+  plan_options.should_stop = [&](int) {
+    if (!ros::ok() || ros::isShuttingDown()) stopped_by = StopReason::kShutdown;
+    else if (cancel != nullptr && cancel->load()) stopped_by = StopReason::kCancelled;
+    else if (timed && std::chrono::steady_clock::now() >= deadline) stopped_by = StopReason::kTimeLimit;
+    return stopped_by != StopReason::kNone;
+  };
   GridPlan plan;
   plan.result = eaci::plan(view, *start_cell, *reachable_goal, options.algorithm, params, plan_options);
+  if (plan.result.interrupted) plan.stopped_by = stopped_by;
   if (!plan.result.success()) {
-    plan.error = plan.result.interrupted ? "no route found within max_planning_time" : plan.result.error;
+    if (!plan.result.interrupted) {
+      plan.error = plan.result.error;
+    } else if (stopped_by == StopReason::kTimeLimit) {
+      plan.error = "no route found within max_planning_time";
+    } else {
+      plan.error = std::string(toString(stopped_by)) + " after " + std::to_string(plan.result.iterations_run) +
+                   " iterations, before any ant reached the goal: no route";
+    }
     return plan;
   }
   geometry_msgs::PoseStamped target = goal;

@@ -5,12 +5,19 @@
 //                        published latched on `map` for RViz and other nodes
 //   every core parameter and the ROS options of ros_parameters.hpp under ~ (~robot_radius
 //   grows the obstacles so that a robot of that radius, planned as a point, keeps clear)
-// Services: ~make_plan (nav_msgs/GetPlan). Topics: ~plan (nav_msgs/Path), ~pheromone
-// (nav_msgs/OccupancyGrid, with ~visualize_pheromone).
+// Services: ~make_plan (nav_msgs/GetPlan), ~cancel (std_srvs/Trigger: the plan in progress
+// stops at its next iteration and answers with the best route so far). Topics: ~plan
+// (nav_msgs/Path), ~pheromone (nav_msgs/OccupancyGrid, with ~visualize_pheromone).
+//
+// Threads: two spinner threads serve make_plan and the map topic (make_plan calls and map
+// updates take turns on one mutex); ~cancel has a callback queue and a thread of its own, so
+// it is answered while every other thread waits for a plan.
 #include <nav_msgs/GetPlan.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -21,6 +28,7 @@
 
 #include "eaci/io/map_io.hpp"
 #include "grid_planner.hpp"
+#include "plan_cancellation.hpp"
 
 namespace eaci_ros {
 
@@ -46,6 +54,10 @@ class PlannerNode {
       ROS_INFO("eaci_planner_node: waiting for a map on %s", map_sub_.getTopic().c_str());
     }
     service_ = private_nh_.advertiseService("make_plan", &PlannerNode::onMakePlan, this);
+    ros::NodeHandle cancel_nh("~");
+    cancel_nh.setCallbackQueue(&cancel_queue_);
+    cancel_service_ = cancel_nh.advertiseService("cancel", &PlannerNode::onCancel, this);
+    cancel_spinner_.start();
   }
 
  private:
@@ -83,8 +95,20 @@ class PlannerNode {
     }
   }
 
+  // Cancels the plan in progress, if any; a make_plan call still waiting for its turn is not
+  // affected.
+  bool onCancel(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+    response.success = cancellation_.cancel();
+    response.message = response.success
+                           ? "cancelling the plan in progress: it stops at its next iteration with the best route so far"
+                           : "no plan in progress";
+    ROS_INFO("eaci_planner_node: cancel: %s", response.message.c_str());
+    return true;
+  }
+
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
     std::lock_guard<std::mutex> lock(mutex_);
+    const PlanCancellation::Scope in_progress(cancellation_);
     response.plan.header.frame_id = map_.header.frame_id;
     response.plan.header.stamp = ros::Time::now();
     if (!have_map_) {
@@ -99,14 +123,16 @@ class PlannerNode {
     }
     const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
     const GridPlan plan = planOnGrid(viewOf(map_, options_.occupied_threshold, options_.allow_unknown), frameOf(map_),
-                                     start, goal, tolerance, params_, options_);
+                                     start, goal, tolerance, params_, options_, cancellation_.flag());
     if (!plan.ok) {
       ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());
       return true;
     }
-    ROS_INFO("eaci_planner_node: %s route of %.3f m (%zu poses, %d islands, %lld lost ants)",
+    ROS_INFO("eaci_planner_node: %s route of %.3f m (%zu poses, %d islands, %d iterations, %lld lost ants)%s%s",
              eaci::toString(options_.algorithm), plan.result.length * map_.info.resolution, plan.path.poses.size(),
-             static_cast<int>(plan.result.islands.size()), plan.result.lost_ants_total);
+             static_cast<int>(plan.result.islands.size()), plan.result.iterations_run, plan.result.lost_ants_total,
+             plan.stopped_by == StopReason::kNone ? "" : ", the best so far: ",
+             plan.stopped_by == StopReason::kNone ? "" : toString(plan.stopped_by));
     response.plan = plan.path;
     if (options_.publish_plan) plan_pub_.publish(plan.path);
     if (options_.visualize_pheromone && !plan.result.pheromone.empty())
@@ -126,6 +152,11 @@ class PlannerNode {
   ros::Subscriber map_sub_;
   ros::Publisher map_pub_, plan_pub_, pheromone_pub_;
   ros::ServiceServer service_;
+  // ~cancel: its own queue and thread.
+  PlanCancellation cancellation_;
+  ros::CallbackQueue cancel_queue_;
+  ros::AsyncSpinner cancel_spinner_{1, &cancel_queue_};
+  ros::ServiceServer cancel_service_;
 };
 
 }  // namespace eaci_ros
@@ -134,7 +165,9 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "eaci_planner_node");
   try {
     eaci_ros::PlannerNode node;
-    ros::spin();
+    ros::AsyncSpinner spinner(2);  // a second make_plan or a map waits on the node's mutex, not in the queue
+    spinner.start();
+    ros::waitForShutdown();
   } catch (const std::exception& e) {
     ROS_FATAL("eaci_planner_node: %s", e.what());
     return 1;

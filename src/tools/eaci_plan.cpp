@@ -29,6 +29,7 @@
 #include "eaci/grid/cell_numbering.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
+#include "eaci/io/parameter_file.hpp"
 #include "eaci/planner.hpp"
 #include "plan_image.hpp"
 #include "plan_json.hpp"
@@ -81,37 +82,10 @@ struct Options {
 
 // A flat YAML mapping of parameter names to scalar values, applied on top of `p`.
 void applyParameterFile(eaci::Parameters& p, const std::string& file) {
-  const std::string where = "--params '" + file + "'";
-  YAML::Node root;
   try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    throw InputError(where + ": cannot open the file");
-  } catch (const YAML::Exception& e) {
-    throw InputError(where + " is not valid YAML: " + e.what());
-  }
-  if (!root.IsMap()) {
-    const char* kind = root.IsNull() ? "an empty document" : root.IsSequence() ? "a list" : "a single value";
-    throw InputError(where + ": expected a mapping of parameter names to values, got " + kind);
-  }
-  for (const auto& entry : root) {
-    if (!entry.first.IsScalar()) throw InputError(where + ": parameter names must be plain words");
-    const std::string key = entry.first.Scalar();
-    if (entry.second.IsNull()) throw InputError(where + ": '" + key + "' has no value");
-    if (!entry.second.IsScalar())
-      throw InputError(where + ": '" + key + "' must be a single value, not a list or mapping (the file is flat)");
-    try {
-      eaci::setParameter(p, key, entry.second.Scalar());
-    } catch (const eaci::ParameterError& e) {
-      // YAML spells booleans in more ways (True, YES, ...) than setParameter accepts.
-      bool flag = false;
-      if (!YAML::convert<bool>::decode(entry.second, flag)) throw InputError(where + ": " + e.what());
-      try {
-        eaci::setParameter(p, key, flag ? "true" : "false");
-      } catch (const eaci::ParameterError&) {
-        throw InputError(where + ": " + e.what());
-      }
-    }
+    eaci::applyParameterFile(file, p, "--params '" + file + "'");
+  } catch (const eaci::ParameterFileError& e) {
+    throw InputError(e.what());
   }
 }
 
