@@ -50,8 +50,8 @@ class Colony {
   Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se)
       : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
         routes_(static_cast<std::size_t>(params.ants)),
-        walkers_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))),
-        scratch_routes_(walkers_.size()), workers_(static_cast<int>(walkers_.size())) {}
+        worker_state_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))),
+        workers_(static_cast<int>(worker_state_.size())) {}
 
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
     ColonyRun run;
@@ -82,8 +82,8 @@ class Colony {
     const int ants = params_.ants;
     std::atomic<int> next_ant{0};
     workers_.run([&](int worker) {
-      AntWalker& walker = walkers_[static_cast<std::size_t>(worker)];
-      AntRoute& scratch = scratch_routes_[static_cast<std::size_t>(worker)];
+      AntWalker& walker = worker_state_[static_cast<std::size_t>(worker)].walker;
+      AntRoute& scratch = worker_state_[static_cast<std::size_t>(worker)].scratch;
       for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < ants;
            k = next_ant.fetch_add(1, std::memory_order_relaxed)) {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
@@ -142,8 +142,13 @@ class Colony {
   UpdateRule update_;
   double d_se_;
   std::vector<AntRoute> routes_;
-  std::vector<AntWalker> walkers_;  // one per worker: each reuses its own memory
-  std::vector<AntRoute> scratch_routes_;
+  // What one worker writes at every step, on cache lines of its own (two workers writing to
+  // one line would make each wait for the other).
+  struct alignas(64) WorkerState {
+    AntWalker walker;  // reuses its memory from walk to walk
+    AntRoute scratch;  // the route being walked
+  };
+  std::vector<WorkerState> worker_state_;
   WorkerGroup workers_;
   int best_ = -1;
   int worst_ = -1;
