@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Builds eaci_bench (Release, no ROS, into build-bench/) and runs the three benchmarks into
+# Builds eaci_bench (Release, no ROS, into build-bench/) and runs the four benchmarks into
 # out/bench/, then draws the figures into docs/figures/.
 #   paper  - the paper's Tables 1-3 on its maps, 20 seeds          (about 10 s)
 #   sweep  - Figs 11-14 parameter studies and classic ACO's rho/tau0 (about 1-2 min)
 #   scale  - generated maps 50..800 cells, time, memory, gap to A*  (about 1-2 min)
-# Usage: scripts/bench.sh [paper|sweep|scale|plot ...]   (default: all of them)
+#   deadline - 800 x 800 maps, wall time against max_planning_time  (about 30 s)
+# Usage: scripts/bench.sh [paper|sweep|scale|deadline|plot ...]   (default: all of them)
 # Maps are read from ${EACI_MAPS_DIR:-../shared/maps}. Timings are only as good as the
 # machine is quiet: the reports record the load average at the start of each run.
 set -euo pipefail
@@ -16,7 +17,7 @@ out=out/bench
 figures=docs/figures
 bench=build-bench/bin/eaci_bench
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale plot)
+[ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale deadline plot)
 
 EACI_WITH_ROS=OFF scripts/install_deps.sh python3-matplotlib python3-numpy
 cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_BUILD_TESTS=OFF >/dev/null
@@ -33,15 +34,16 @@ for step in "${steps[@]}"; do
     paper) "$bench" paper --maps "$maps" --runs 20 --threads 1 --out "$out" ;;
     sweep) "$bench" sweep --maps "$maps" --runs 20 --out "$out" ;;
     scale) "$bench" scale --sizes 50,100,200,400,800 --out "$out" ;;
+    deadline) "$bench" deadline --sizes 800 --runs 3 --out "$out" ;;
     plot)
       results=()
       for kind in paper sweep scale; do [ -f "$out/$kind.json" ] && results+=("$out/$kind.json"); done
       /usr/bin/python3 scripts/plot_benchmarks.py "${results[@]}" "$figures" >/dev/null
       echo "figures in $figures/" ;;
-    *) echo "bench.sh: unknown step '$step' (paper, sweep, scale, plot)" >&2; exit 2 ;;
+    *) echo "bench.sh: unknown step '$step' (paper, sweep, scale, deadline, plot)" >&2; exit 2 ;;
   esac
 done
 
 echo "Markdown tables:"
-for kind in paper sweep scale; do [ -f "$out/$kind.md" ] && echo "  $out/$kind.md"; done
+for kind in paper sweep scale deadline; do [ -f "$out/$kind.md" ] && echo "  $out/$kind.md"; done
 echo "(JSON and CSV beside them; docs/benchmarks.md quotes them)"
