@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "eaci/aco/pheromone_field.hpp"
@@ -43,8 +44,9 @@ inline double regionEdgePheromone(const Line& line, Point2 from, Point2 to) {
 // and min tau0 are taken as 1.
 inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::vector<Cell>& islands,
                                              double lambda, double alpha) {
-  const double kUnset = -1.0;
-  std::vector<double> region_value(grid.cellCount() * kDirections, kUnset);
+  // (edge, value) of every region edge; the regions are small, so this is much smaller than a
+  // value per edge of the map.
+  std::vector<std::pair<std::size_t, double>> region_value;
   double max_tau0 = -std::numeric_limits<double>::infinity();
   double min_tau0 = std::numeric_limits<double>::infinity();
   for (std::size_t z = 0; z + 1 < islands.size(); ++z) {
@@ -61,8 +63,7 @@ inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::
           if (!in_region(to) || !grid.canMove(from, d)) continue;
           const double value =
               regionEdgePheromone(line, cellCentre(from, grid.height()), cellCentre(to, grid.height()));
-          double& slot = region_value[grid.index(from) * kDirections + d];
-          slot = std::max(slot, value);
+          region_value.emplace_back(grid.index(from) * kDirections + static_cast<std::size_t>(d), value);
           if (std::isfinite(value)) {
             max_tau0 = std::max(max_tau0, value);
             min_tau0 = std::min(min_tau0, value);
@@ -73,13 +74,13 @@ inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::
   }
   if (!std::isfinite(max_tau0)) max_tau0 = min_tau0 = 1.0;
 
+  // An edge in two regions: its largest value (sorting puts it last among the edge's entries).
+  std::sort(region_value.begin(), region_value.end());
   PheromoneField field(grid.cellCount(), min_tau0, alpha);
-  for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) {
-    for (int d = 0; d < kDirections; ++d) {
-      const double value = region_value[cell * kDirections + d];
-      if (value == kUnset) continue;
-      field.set(cell, d, std::isfinite(value) ? value : lambda * max_tau0);
-    }
+  for (std::size_t k = 0; k < region_value.size(); ++k) {
+    if (k + 1 < region_value.size() && region_value[k + 1].first == region_value[k].first) continue;
+    const auto [edge, value] = region_value[k];
+    field.set(edge / kDirections, static_cast<int>(edge % kDirections), std::isfinite(value) ? value : lambda * max_tau0);
   }
   field.refreshChanged();
   return field;
