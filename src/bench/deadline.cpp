@@ -128,12 +128,8 @@ int runDeadlineCommand(const DeadlineOptions& options) {
         }
       }
   progress.finish();
-  makeDirectories(options.out_dir);
-  const std::string base = options.out_dir + "/deadline";
-  writeJson(base + ".json", toJson(options, provenance, runs));
-  writeText(base + ".csv", csv(runs));
-  writeText(base + ".md", markdown(options, provenance, runs));
-  std::cout << "wrote " << base << ".json, " << base << ".csv and " << base << ".md\n";
+  writeReport(options.out_dir, "deadline",
+              {toJson(options, provenance, runs), csv(runs), markdown(options, provenance, runs), {}});
   return 0;
 }
 

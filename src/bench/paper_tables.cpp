@@ -88,13 +88,9 @@ int runPaperCommand(const PaperOptions& options) {
   }
   progress.finish();
 
-  makeDirectories(options.out_dir);
-  const std::string base = options.out_dir + "/paper";
-  writeJson(base + ".json", paperJson(results, options, provenance));
-  writeText(base + ".csv", paperSummaryCsv(results));
-  writeText(base + "_runs.csv", paperRunsCsv(results));
-  writeText(base + ".md", paperMarkdown(results, options, provenance));
-  std::cout << "wrote " << base << ".json, " << base << ".csv, " << base << "_runs.csv and " << base << ".md\n";
+  writeReport(options.out_dir, "paper",
+              {paperJson(results, options, provenance), paperSummaryCsv(results),
+               paperMarkdown(results, options, provenance), {{"_runs.csv", paperRunsCsv(results)}}});
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -91,5 +92,23 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void writeJson(const std::string& path, const nlohmann::json& j) { writeText(path, j.dump() + "\n"); }
+
+void writeReport(const std::string& dir, const std::string& name, const ReportFiles& files) {
+  makeDirectories(dir);
+  const std::string base = dir + "/" + name;
+  std::vector<std::string> written = {base + ".json", base + ".csv"};
+  writeJson(written[0], files.json);
+  writeText(written[1], files.csv);
+  for (const auto& [suffix, text] : files.extra) {
+    writeText(base + suffix, text);
+    written.push_back(base + suffix);
+  }
+  writeText(base + ".md", files.markdown);
+  written.push_back(base + ".md");
+  std::cout << "wrote";
+  for (std::size_t k = 0; k < written.size(); ++k)
+    std::cout << (k == 0 ? " " : k + 1 == written.size() ? " and " : ", ") << written[k];
+  std::cout << "\n";
+}
 
 }  // namespace eaci_bench

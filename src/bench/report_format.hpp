@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -44,5 +45,15 @@ std::string csvNumber(double value);
 void makeDirectories(const std::string& dir);
 void writeText(const std::string& path, const std::string& text);
 void writeJson(const std::string& path, const nlohmann::json& j);
+
+// One command's report: DIR/NAME.json, DIR/NAME.csv, DIR/NAME.md and any extra files
+// (name suffix and text, e.g. {"_runs.csv", ...}); creates DIR and lists the files on stdout.
+struct ReportFiles {
+  nlohmann::json json;
+  std::string csv;
+  std::string markdown;
+  std::vector<std::pair<std::string, std::string>> extra;
+};
+void writeReport(const std::string& dir, const std::string& name, const ReportFiles& files);
 
 }  // namespace eaci_bench

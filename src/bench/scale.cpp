@@ -162,12 +162,8 @@ int runScaleCommand(const ScaleOptions& options) {
   ScaleRunner runner(options);
   const std::vector<ScaleCase> cases = runner.run();
 
-  makeDirectories(options.out_dir);
-  const std::string base = options.out_dir + "/scale";
-  writeJson(base + ".json", scaleJson(cases, options, provenance));
-  writeText(base + ".csv", scaleCsv(cases));
-  writeText(base + ".md", scaleMarkdown(cases, options, provenance));
-  std::cout << "wrote " << base << ".json, " << base << ".csv and " << base << ".md\n";
+  writeReport(options.out_dir, "scale",
+              {scaleJson(cases, options, provenance), scaleCsv(cases), scaleMarkdown(cases, options, provenance), {}});
   return 0;
 }
 

@@ -146,12 +146,9 @@ int runSweepCommand(const SweepOptions& options) {
   const std::vector<RhoPoint> rho_points = runRhoSweep(options, progress);
   progress.finish();
 
-  makeDirectories(options.out_dir);
-  const std::string base = options.out_dir + "/sweep";
-  writeJson(base + ".json", sweepJson(eaci_points, rho_points, options, provenance));
-  writeText(base + ".csv", sweepCsv(eaci_points, rho_points));
-  writeText(base + ".md", sweepMarkdown(eaci_points, rho_points, options, provenance));
-  std::cout << "wrote " << base << ".json, " << base << ".csv and " << base << ".md\n";
+  writeReport(options.out_dir, "sweep",
+              {sweepJson(eaci_points, rho_points, options, provenance), sweepCsv(eaci_points, rho_points),
+               sweepMarkdown(eaci_points, rho_points, options, provenance), {}});
   return 0;
 }
 
