@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "eaci/io/map_io.hpp"
+
 #define FUZZ_CHECK(condition)                                                                     \
   do {                                                                                            \
     if (!(condition)) {                                                                           \
@@ -27,6 +29,13 @@ inline void checkMapErrorMessage(const std::string& message, const std::string& 
   FUZZ_CHECK(message.find('\n') == std::string::npos);
   FUZZ_CHECK(message.find('\r') == std::string::npos);
   FUZZ_CHECK(message.compare(0, source.size() + 2, source + ": ") == 0);
+}
+
+// A decoded image: at least 1 x 1, within the cell cap, one pixel per cell.
+inline void checkWellFormedImage(const eaci::GrayImage& image) {
+  FUZZ_CHECK(image.width >= 1 && image.height >= 1);
+  FUZZ_CHECK(static_cast<std::uint64_t>(image.width) * static_cast<std::uint64_t>(image.height) <= eaci::kMaxMapCells);
+  FUZZ_CHECK(image.pixels.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
 }
 
 }  // namespace eaci::fuzz

@@ -16,9 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     eaci::fuzz::checkMapErrorMessage(error.what(), source);
     return 0;
   }
-  FUZZ_CHECK(image.width >= 1 && image.height >= 1);
-  FUZZ_CHECK(static_cast<std::uint64_t>(image.width) * static_cast<std::uint64_t>(image.height) <= eaci::kMaxMapCells);
-  FUZZ_CHECK(image.pixels.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
+  eaci::fuzz::checkWellFormedImage(image);
 
   // decodeImage dispatches PGM to the same parser.
   FUZZ_CHECK(eaci::decodeImage(bytes, source).pixels == image.pixels);

@@ -54,7 +54,7 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
   const bool timed = options.max_planning_time > 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timed ? options.max_planning_time : 0.0);
   StopReason stopped_by = StopReason::kNone;
-  // Asked by the colony between iterations, in this thread.
+  // Asked between EACI's set-up steps and between iterations, in this thread.
   plan_options.should_stop = [&](int) {
     if (!ros::ok() || ros::isShuttingDown()) stopped_by = StopReason::kShutdown;
     else if (cancel != nullptr && cancel->load()) stopped_by = StopReason::kCancelled;

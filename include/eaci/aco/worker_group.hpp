@@ -32,9 +32,7 @@ class WorkerGroup {
     for (std::thread& t : threads_) t.join();
   }
 
-  int size() const { return static_cast<int>(threads_.size()) + 1; }
-
-  // Calls job(w) once for every worker w in [0, size()), worker 0 on the calling thread, and
+  // Calls job(w) once for every worker w in [0, workers), worker 0 on the calling thread, and
   // returns when all have returned; rethrows the first exception a worker threw.
   void run(const Job& job) {
     if (threads_.empty()) {

@@ -1,0 +1,52 @@
+// WorkerGroup: every worker runs the job once per run(), on threads kept between runs, and an
+// exception thrown by a worker reaches the caller.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "eaci/aco/worker_group.hpp"
+
+TEST(PlannerThreads, WorkerGroupRunsEveryWorkerOncePerRunOnKeptThreads) {
+  eaci::WorkerGroup group(3);
+  std::mutex mutex;
+  std::vector<std::set<std::thread::id>> threads_of_worker(3);
+  for (int run = 0; run < 50; ++run) {
+    std::vector<int> calls(3, 0);
+    group.run([&](int worker) {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++calls[static_cast<std::size_t>(worker)];
+      threads_of_worker[static_cast<std::size_t>(worker)].insert(std::this_thread::get_id());
+    });
+    EXPECT_EQ(calls, std::vector<int>({1, 1, 1})) << "run " << run;
+  }
+  // Worker 0 is the caller; the others keep their own thread for all 50 runs.
+  for (const auto& ids : threads_of_worker) EXPECT_EQ(ids.size(), 1u);
+  EXPECT_EQ(*threads_of_worker[0].begin(), std::this_thread::get_id());
+  EXPECT_NE(*threads_of_worker[1].begin(), *threads_of_worker[2].begin());
+}
+
+TEST(PlannerThreads, WorkerGroupRethrowsAWorkersExceptionAndStaysUsable) {
+  eaci::WorkerGroup group(2);
+  EXPECT_THROW(group.run([](int worker) {
+                 if (worker == 1) throw std::runtime_error("worker 1 failed");
+               }),
+               std::runtime_error);
+  std::atomic<int> calls{0};
+  group.run([&](int) { ++calls; });
+  EXPECT_EQ(calls.load(), 2);
+}
+
+TEST(PlannerThreads, WorkerGroupOfOneRunsOnTheCaller) {
+  eaci::WorkerGroup group(1);
+  std::thread::id seen;
+  group.run([&](int worker) {
+    EXPECT_EQ(worker, 0);
+    seen = std::this_thread::get_id();
+  });
+  EXPECT_EQ(seen, std::this_thread::get_id());
+}
