@@ -1,7 +1,7 @@
 // Google Benchmark of the colony's hot loops on the paper's 50 x 50 map (corner cutting
 // allowed, the paper's parameters): one ant's walk, one pheromone update, one iteration.
 //   build/bin/eaci_microbench [--benchmark_filter=...]
-// The map is read from $EACI_MAPS_DIR (default ../shared/maps).
+// The map is read from $EACI_MAPS_DIR (default maps/paper).
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -19,7 +19,7 @@ struct Fixture {
 
   Fixture() {
     const char* dir = std::getenv("EACI_MAPS_DIR");
-    const std::string maps = dir != nullptr ? dir : "../shared/maps";
+    const std::string maps = dir != nullptr ? dir : "maps/paper";
     grid = eaci::BinaryGrid::fromView(eaci::loadMatrixText(maps + "/paper-50x50.txt").view(), true);
     params.allow_corner_cutting = true;
   }

@@ -2,7 +2,7 @@
 # Averages of 20 eaci_plan runs (seeds 1-20) on one paper map, corner cutting allowed.
 # Usage: scripts/paper_summary.sh MAP_FILE START_CELL GOAL_CELL [extra eaci_plan options]
 #   e.g. scripts/paper_summary.sh paper-50x50.txt 2451 50 --set island_strategy=paper
-# Maps are read from ${EACI_MAPS_DIR:-../shared/maps}. Needs build/bin/eaci_plan.
+# Maps are read from ${EACI_MAPS_DIR:-maps/paper}. Needs build/bin/eaci_plan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ $# -ge 3 ] || { sed -n '2,5p' "$0" >&2; exit 2; }
@@ -11,7 +11,7 @@ shift 3
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 for seed in $(seq 1 20); do
-  build/bin/eaci_plan --map "${EACI_MAPS_DIR:-../shared/maps}/$map" --start-cell "$start" --goal-cell "$goal" \
+  build/bin/eaci_plan --map "${EACI_MAPS_DIR:-maps/paper}/$map" --start-cell "$start" --goal-cell "$goal" \
     --set allow_corner_cutting=true --seed "$seed" --json "$dir/$seed.json" --quiet "$@" >/dev/null
 done
 /usr/bin/python3 - "$dir" <<'PY'

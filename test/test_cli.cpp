@@ -18,6 +18,7 @@
 
 #include "eaci/aco/parameters.hpp"
 #include "eaci/io/map_io.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -26,11 +27,6 @@ using nlohmann::json;
 
 const std::string kBinary = EACI_BINARY_DIR "/bin/eaci_plan";
 constexpr const char* kPrefix = "eaci_plan: error: ";
-
-std::string mapsDir() {
-  if (const char* env = std::getenv("EACI_MAPS_DIR"); env && *env) return env;
-  return EACI_DEFAULT_MAPS_DIR;
-}
 
 std::string readFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -72,7 +68,7 @@ class CliTest : public ::testing::Test {
   fs::path tmp(const std::string& name) const { return dir_ / name; }
 
   static std::string paperMap(const std::string& name) {
-    const std::string path = mapsDir() + "/" + name;
+    const std::string path = eaci::test::mapsDir() + "/" + name;
     return path;
   }
 
@@ -133,7 +129,7 @@ double recomputedLength(const json& path) {
   return length;
 }
 
-// A* lengths of ../shared/maps/README.md.
+// A* lengths of maps/paper/README.md.
 struct AStarCase {
   const char* map;
   const char* start;

@@ -16,6 +16,7 @@
 
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
+#include "test_support.hpp"
 
 namespace eaci {
 namespace {
@@ -542,8 +543,8 @@ TEST_F(MapIoFiles, DirectoriesAndDevicesAreRefused) {
 // ------------------------------------------------------------------ bundled and benchmark maps
 
 TEST(PaperMapFiles, AllLoadWithTheirSizes) {
-  const fs::path dir(EACI_DEFAULT_MAPS_DIR);
-  if (!fs::is_directory(dir)) GTEST_SKIP() << "paper maps not found in " << dir << " (set EACI_MAPS_DIR)";
+  const fs::path dir(eaci::test::mapsDir());
+  ASSERT_TRUE(fs::is_directory(dir)) << "the paper's maps are missing: " << dir;
   for (int size : {20, 30, 40, 50}) {
     const std::string name = "paper-" + std::to_string(size) + "x" + std::to_string(size) + ".txt";
     const OccupancyMap map = loadMap((dir / name).string());

@@ -15,18 +15,20 @@
 
 namespace eaci::test {
 
+// The paper's benchmark maps: maps/paper of the source tree, or $EACI_MAPS_DIR.
 inline std::string mapsDir() {
   const char* env = std::getenv("EACI_MAPS_DIR");
-  return env != nullptr && *env != '\0' ? std::string(env) : std::string(EACI_DEFAULT_MAPS_DIR);
+  return env != nullptr && *env != '\0' ? std::string(env) : std::string(EACI_SOURCE_DIR "/maps/paper");
 }
 
-// A paper benchmark map (../shared/maps/<name>) as a BinaryGrid.
+// A paper benchmark map (maps/paper/<name>) as a BinaryGrid; a missing file fails the test
+// with the loader's message (it names the path).
 inline BinaryGrid paperMap(const std::string& name, bool allow_corner_cutting) {
   const OccupancyMap map = loadMatrixText(mapsDir() + "/" + name);
   return BinaryGrid::fromView(map.view(), allow_corner_cutting);
 }
 
-// The paper maps with their start and goal cells and optima (shared/maps/README.md).
+// The paper maps with their start and goal cells and optima (maps/paper/README.md).
 struct PaperCase {
   std::string file;
   Cell start;
