@@ -1,30 +1,23 @@
 // Which cells can be reached from a cell under the grid's move rule.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "eaci/grid/binary_grid.hpp"
+#include "eaci/search/grid_search.hpp"
 
 namespace eaci {
 
 // Flag per cell (index order of the grid): 1 if reachable from `from`.
 inline std::vector<std::uint8_t> reachableFrom(const BinaryGrid& grid, Cell from) {
-  std::vector<std::uint8_t> reached(grid.cellCount(), 0);
-  if (!grid.isFree(from)) return reached;
-  std::vector<std::size_t> frontier{grid.index(from)};
-  reached[grid.index(from)] = 1;
-  while (!frontier.empty()) {
-    const Cell cell = grid.cellAt(frontier.back());
-    frontier.pop_back();
-    for (int d = 0; d < kDirections; ++d) {
-      if (!grid.canMove(cell, d)) continue;
-      const std::size_t next = grid.index(step(cell, d));
-      if (reached[next]) continue;
-      reached[next] = 1;
-      frontier.push_back(next);
-    }
-  }
+  GridSearchRequest request;
+  request.source = from;
+  request.order = SearchOrder::kAnyOrder;
+  const std::vector<double> distance = searchGrid(grid, request).distance;
+  std::vector<std::uint8_t> reached(distance.size(), 0);
+  for (std::size_t i = 0; i < distance.size(); ++i) reached[i] = std::isfinite(distance[i]) ? 1 : 0;
   return reached;
 }
 
