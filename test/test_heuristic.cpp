@@ -1,6 +1,10 @@
 // Eq. 9, 16, 17: heuristic values and the turning cost of every turn.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "eaci/aco/ant_walk.hpp"
 #include "eaci/aco/heuristic.hpp"
 
 namespace {
@@ -22,15 +26,21 @@ TEST(Heuristic, FirstMoveOfARouteHasNoTurningCost) {
   EXPECT_DOUBLE_EQ(eaci::turningCost(-1, kNorthWest, 0.5), 0.0);
 }
 
+// Hand-computed eta values, read from the walk the solver runs (beta = 1, so the weight is eta).
 TEST(Heuristic, EtaValues) {
-  EXPECT_DOUBLE_EQ(eaci::goalDistanceHeuristic(4.0), 0.25);              // Eq. 9
-  EXPECT_DOUBLE_EQ(eaci::turningAwareHeuristic(4.0, 1.0), 0.2);          // Eq. 16
-  EXPECT_DOUBLE_EQ(eaci::turningAwareHeuristic(2.0, 0.0), 0.5);
+  const auto grid = eaci::BinaryGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  const eaci::Cell from{0, 0};
+  // Target (0, 5): the east move lands on (0, 1), 4 cells from it.
+  const eaci::WalkSetup classic(grid, field, {from, eaci::Cell{0, 5}}, eaci::HeuristicRule::kGoalDistance, 1.0, 0.0);
+  EXPECT_DOUBLE_EQ(classic.heuristicWeight(from, grid.index(from), 1, -1, kEast), 0.25);  // Eq. 9: 1 / 4
+  const eaci::WalkSetup turning(grid, field, {from, eaci::Cell{0, 5}}, eaci::HeuristicRule::kTurningAware, 1.0, 1.0);
+  EXPECT_DOUBLE_EQ(turning.heuristicWeight(from, grid.index(from), 1, kNorthEast, kEast), 0.2);  // Eq. 16: 1 / (4 + 1)
+  EXPECT_DOUBLE_EQ(turning.heuristicWeight(from, grid.index(from), 1, kEast, kEast), 0.25);      // no turn: 1 / 4
+  // Target (0, 3): from (0, 1) it is 2 cells away; straight on, eta = 1 / 2.
+  const eaci::WalkSetup near(grid, field, {from, eaci::Cell{0, 3}}, eaci::HeuristicRule::kTurningAware, 1.0, 1.0);
+  EXPECT_DOUBLE_EQ(near.heuristicWeight(from, grid.index(from), 1, -1, kEast), 0.5);
 }
-
-#include <cmath>
-
-#include "eaci/aco/ant_walk.hpp"
 
 TEST(Heuristic, FastInversePowerEqualsPow) {
   for (double beta : {0.0, 1.0, 2.0, 7.0, 12.0, 2.5, 7.3, 13.0}) {
@@ -50,8 +60,8 @@ TEST(Heuristic, WalkWeightIsEtaToTheBetaOfEquationSixteen) {
   const double d = std::hypot(5 - 2, 4 - 1);
   for (int previous : {-1, 0, 1, 2, 3, 4, 5, 6, 7}) {
     const int dir = 7;  // south-east
-    const double expected =
-        std::pow(eaci::turningAwareHeuristic(d, eaci::turningCost(previous, dir, 0.5)), 7.0);
+    const int turn_steps = previous < 0 ? 0 : std::min((dir - previous + 8) % 8, (previous - dir + 8) % 8);
+    const double expected = std::pow(1.0 / (d + 0.5 * turn_steps), 7.0);  // Eq. 16-17 by hand
     EXPECT_NEAR(setup.heuristicWeight(from, grid.index(from), 1, previous, dir) / expected, 1.0, 1e-6);
     (void)next;
   }
