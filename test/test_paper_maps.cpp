@@ -27,7 +27,6 @@ double shortestRouteThrough(const BinaryGrid& grid, const std::vector<Cell>& isl
 struct MapRuns {
   int runs = 0;
   int through_islands_optimal = 0;
-  double worst_ratio = 0.0;
 };
 
 MapRuns runEaciTwentySeeds(const eaci::test::PaperCase& pc,
@@ -53,7 +52,6 @@ MapRuns runEaciTwentySeeds(const eaci::test::PaperCase& pc,
     const double through = shortestRouteThrough(grid, r.islands);
     EXPECT_LE(r.length, 1.10 * through + 1e-9) << pc.file << " seed " << seed;
     ++stats.runs;
-    stats.worst_ratio = std::max(stats.worst_ratio, r.length / through);
     if (std::abs(r.length - through) < 1e-6) ++stats.through_islands_optimal;
     // The per-iteration records cover every iteration and add up.
     EXPECT_EQ(r.iterations_run, p.max_iterations);
@@ -74,8 +72,6 @@ TEST(PaperMaps, EaciStaysWithinTenPercentOfTheBestRouteThroughItsIslands) {
   for (const auto& pc : eaci::test::paperCases()) {
     const MapRuns stats = runEaciTwentySeeds(pc);
     EXPECT_EQ(stats.runs, 20) << pc.file;
-    std::cout << "[ paper ] " << pc.file << ": through-islands optimum in " << stats.through_islands_optimal
-              << "/20 runs, worst ratio " << stats.worst_ratio << "\n";
   }
 }
 
