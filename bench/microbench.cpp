@@ -13,14 +13,14 @@
 namespace {
 
 struct Fixture {
-  eaci::BinaryGrid grid;
+  eaci::CostGrid grid;
   eaci::Parameters params;
   eaci::Cell start{49, 0}, goal{0, 49};
 
   Fixture() {
     const char* dir = std::getenv("EACI_MAPS_DIR");
     const std::string maps = dir != nullptr ? dir : "maps/paper";
-    grid = eaci::BinaryGrid::fromView(eaci::loadMatrixText(maps + "/paper-50x50.txt").view(), true);
+    grid = eaci::CostGrid::fromView(eaci::loadMatrixText(maps + "/paper-50x50.txt").view(), true);
     params.allow_corner_cutting = true;
   }
 };

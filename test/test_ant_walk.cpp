@@ -5,11 +5,11 @@
 #include "test_support.hpp"
 
 using eaci::AntRoute;
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 namespace {
-eaci::CellPath cellsOf(const BinaryGrid& grid, const AntRoute& route) {
+eaci::CellPath cellsOf(const CostGrid& grid, const AntRoute& route) {
   eaci::CellPath path;
   for (auto index : route.cells) path.push_back(grid.cellAt(index));
   return path;
@@ -19,7 +19,7 @@ eaci::CellPath cellsOf(const BinaryGrid& grid, const AntRoute& route) {
 TEST(AntWalk, DeadEndWithoutAWayBackIsALostAnt) {
   // S at the mouth of a one-cell-wide dead end whose only exit is S itself: the ant must
   // enter it (E is walled off from that side... here E is reachable only through S).
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0, 0}, {1, 1, 1, 0}, {0, 0, 0, 0}}, false);
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0}, {1, 1, 1, 0}, {0, 0, 0, 0}}, false);
   const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   // From (0,1) heading to (2,0): going west into (0,0) is a trap (nothing beyond it).
   const eaci::WalkSetup setup(grid, field, {Cell{0, 1}, Cell{2, 0}}, eaci::HeuristicRule::kGoalDistance, 7.0, 0.5);
@@ -46,7 +46,7 @@ TEST(AntWalk, DeadEndWithoutAWayBackIsALostAnt) {
 TEST(AntWalk, VisitsIslandsInOrderAndNeverAnotherIslandEarly) {
   // Open 5 x 5 map; waypoints zig-zag so that the straight way to the second one passes
   // over the third. The third may only be entered after the second.
-  const BinaryGrid grid = BinaryGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 0)), false);
+  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 0)), false);
   const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   const std::vector<Cell> islands{{2, 0}, {2, 4}, {2, 2}, {0, 2}};
   const eaci::WalkSetup setup(grid, field, islands, eaci::HeuristicRule::kTurningAware, 7.0, 0.5);
@@ -68,7 +68,7 @@ TEST(AntWalk, VisitsIslandsInOrderAndNeverAnotherIslandEarly) {
 }
 
 TEST(AntWalk, TakesTheGoalAtOnceWhenItIsANeighbour) {
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, false);
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, false);
   eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   // Make every other move from the start overwhelmingly attractive.
   for (int d = 0; d < eaci::kDirections; ++d) field.set(grid.index(Cell{1, 1}), d, 1e6);
@@ -87,7 +87,7 @@ TEST(AntWalk, RouletteFollowsTheProbabilitiesOfEquationEight) {
   // r0: 1 0 0 0     S = (1,1), E = (0,3). With beta = 0 the heuristic drops out and the
   // r1: 0 0 0 1     first move follows tau alone: north 3, north-east 1, west and east ~0
   //                 -> P(north) = 3/4, P(north-east) = 1/4.
-  const BinaryGrid grid = BinaryGrid::fromRows({{1, 0, 0, 0}, {0, 0, 0, 1}}, false);
+  const CostGrid grid = CostGrid::fromRows({{1, 0, 0, 0}, {0, 0, 0, 1}}, false);
   eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   const std::size_t s = grid.index(Cell{1, 1});
   field.set(s, 2, 3.0);    // north

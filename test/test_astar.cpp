@@ -6,29 +6,29 @@
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 TEST(AStar, CornerRuleDecidesTheWayPastADiagonalGap) {
   // Centre obstacle: with corner cutting (0,1) -> (1,2) slips past it: 2 + sqrt2.
   const std::vector<std::vector<int>> rows = {{0, 0, 0}, {0, 1, 0}, {0, 0, 0}};
-  const auto cutting = eaci::shortestPath(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2});
+  const auto cutting = eaci::shortestPath(CostGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2});
   ASSERT_TRUE(cutting.found);
   EXPECT_NEAR(cutting.length, 2.0 + std::sqrt(2.0), 1e-12);
-  const auto strict = eaci::shortestPath(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2});
+  const auto strict = eaci::shortestPath(CostGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2});
   ASSERT_TRUE(strict.found);
   EXPECT_NEAR(strict.length, 4.0, 1e-12);
-  EXPECT_EQ(eaci::test::routeDefect(BinaryGrid::fromRows(rows, false), strict.path, Cell{0, 0}, Cell{2, 2}), "");
+  EXPECT_EQ(eaci::test::routeDefect(CostGrid::fromRows(rows, false), strict.path, Cell{0, 0}, Cell{2, 2}), "");
 }
 
 TEST(AStar, DiagonalBetweenTwoTouchingObstacles) {
   const std::vector<std::vector<int>> rows = {{0, 1}, {1, 0}};
-  EXPECT_TRUE(eaci::shortestPath(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{1, 1}).found);
-  EXPECT_FALSE(eaci::shortestPath(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{1, 1}).found);
+  EXPECT_TRUE(eaci::shortestPath(CostGrid::fromRows(rows, true), Cell{0, 0}, Cell{1, 1}).found);
+  EXPECT_FALSE(eaci::shortestPath(CostGrid::fromRows(rows, false), Cell{0, 0}, Cell{1, 1}).found);
 }
 
 TEST(AStar, EmptyMapLengthIsTheOctileDistance) {
-  const BinaryGrid grid = BinaryGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(9, 0)), false);
+  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(9, 0)), false);
   const auto p = eaci::shortestPath(grid, Cell{5, 0}, Cell{1, 8});
   ASSERT_TRUE(p.found);
   EXPECT_NEAR(p.length, 4 * std::sqrt(2.0) + 4, 1e-12);
@@ -36,7 +36,7 @@ TEST(AStar, EmptyMapLengthIsTheOctileDistance) {
 }
 
 TEST(AStar, UnreachableBlockedOrOffMapGivesNoPath) {
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 1, 0}, {0, 1, 0}, {0, 1, 0}}, true);
+  const CostGrid grid = CostGrid::fromRows({{0, 1, 0}, {0, 1, 0}, {0, 1, 0}}, true);
   EXPECT_FALSE(eaci::shortestPath(grid, Cell{0, 0}, Cell{0, 2}).found);
   EXPECT_FALSE(eaci::shortestPath(grid, Cell{0, 0}, Cell{0, 1}).found);
   EXPECT_FALSE(eaci::shortestPath(grid, Cell{0, 0}, Cell{5, 5}).found);
@@ -45,7 +45,7 @@ TEST(AStar, UnreachableBlockedOrOffMapGivesNoPath) {
 TEST(AStar, GivesThePublishedOptimaOfThePaperMaps) {
   for (const auto& pc : eaci::test::paperCases()) {
     for (bool cutting : {true, false}) {
-      const BinaryGrid grid = eaci::test::paperMap(pc.file, cutting);
+      const CostGrid grid = eaci::test::paperMap(pc.file, cutting);
       const auto p = eaci::shortestPath(grid, pc.start, pc.goal);
       const double expected = cutting ? pc.optimum_cutting : pc.optimum_no_cutting;
       if (expected < 0) {
@@ -61,8 +61,8 @@ TEST(AStar, GivesThePublishedOptimaOfThePaperMaps) {
 }
 
 TEST(AStar, DistanceFieldAgreesWithAStar) {
-  const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
-  const auto field = eaci::distanceField(grid, Cell{0, 29});
+  const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  const auto field = eaci::costField(grid, Cell{0, 29});
   EXPECT_NEAR(field[grid.index(Cell{29, 0})], 44.5269, 1e-4);
   EXPECT_DOUBLE_EQ(field[grid.index(Cell{0, 29})], 0.0);
   for (int r = 0; r < 30; r += 7)

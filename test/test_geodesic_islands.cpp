@@ -9,34 +9,34 @@
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 using eaci::CellPath;
 
 namespace {
-BinaryGrid emptyGrid(int rows, int cols) {
-  return BinaryGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false);
+CostGrid emptyGrid(int rows, int cols) {
+  return CostGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false);
 }
 }  // namespace
 
 TEST(GeodesicIslands, DescentFollowsAShortestRoute) {
   for (const auto& pc : eaci::test::paperCases()) {
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
-    const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, pc.goal), pc.start);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
+    const CellPath route = eaci::descendCostField(grid, eaci::costField(grid, pc.goal), pc.start);
     EXPECT_EQ(eaci::test::routeDefect(grid, route, pc.start, pc.goal), "") << pc.file;
     EXPECT_NEAR(eaci::test::countedLength(route), pc.optimum_cutting, 1e-4) << pc.file;
   }
 }
 
 TEST(GeodesicIslands, DescentFromAnUnreachableCellIsEmpty) {
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 1, 0}}, false);
-  EXPECT_TRUE(eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 2}), Cell{0, 0}).empty());
+  const CostGrid grid = CostGrid::fromRows({{0, 1, 0}}, false);
+  EXPECT_TRUE(eaci::descendCostField(grid, eaci::costField(grid, Cell{0, 2}), Cell{0, 0}).empty());
 }
 
 TEST(GeodesicIslands, SpacedRsApartAlongTheRoute) {
   // Corridor of 10 cells, N = 4: r_s = 3, islands at 3 and 6, then E (3 further) is within r_s.
-  const BinaryGrid grid = emptyGrid(1, 10);
-  const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 9}), Cell{0, 0});
+  const CostGrid grid = emptyGrid(1, 10);
+  const CellPath route = eaci::descendCostField(grid, eaci::costField(grid, Cell{0, 9}), Cell{0, 0});
   EXPECT_EQ(eaci::geodesicIslands(grid, route, Cell{0, 0}, Cell{0, 9}, 4),
             (std::vector<Cell>{{0, 0}, {0, 3}, {0, 6}, {0, 9}}));
 }
@@ -44,18 +44,18 @@ TEST(GeodesicIslands, SpacedRsApartAlongTheRoute) {
 TEST(GeodesicIslands, SkipCellsTheAuxiliaryMapBlocks) {
   // Same corridor, but the auxiliary map blocks (0,3): the island moves on to (0,4), the next
   // one r_s after it to (0,7), and E is within r_s of (0,7).
-  const BinaryGrid grid = emptyGrid(1, 10);
-  BinaryGrid aux = grid;
+  const CostGrid grid = emptyGrid(1, 10);
+  CostGrid aux = grid;
   aux.setBlocked(Cell{0, 3}, true);
-  const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, Cell{0, 9}), Cell{0, 0});
+  const CellPath route = eaci::descendCostField(grid, eaci::costField(grid, Cell{0, 9}), Cell{0, 0});
   EXPECT_EQ(eaci::geodesicIslands(aux, route, Cell{0, 0}, Cell{0, 9}, 4),
             (std::vector<Cell>{{0, 0}, {0, 4}, {0, 7}, {0, 9}}));
 }
 
 TEST(GeodesicIslands, RouteThroughTheIslandsIsTheOptimum) {
   for (const auto& pc : eaci::test::paperCases()) {
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
-    const CellPath route = eaci::descendDistanceField(grid, eaci::distanceField(grid, pc.goal), pc.start);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
+    const CellPath route = eaci::descendCostField(grid, eaci::costField(grid, pc.goal), pc.start);
     const auto islands =
         eaci::geodesicIslands(eaci::auxiliaryMap(grid, pc.start, pc.goal), route, pc.start, pc.goal, 9);
     ASSERT_GE(islands.size(), 3u);
@@ -68,7 +68,7 @@ TEST(GeodesicIslands, RouteThroughTheIslandsIsTheOptimum) {
 
 TEST(LegDistanceField, ExactInsideTheWindowAndNeverBetterOutside) {
   // 12 x 12 open map with a wall; the island at (6,9), a leg from (6,2).
-  BinaryGrid grid = emptyGrid(12, 12);
+  CostGrid grid = emptyGrid(12, 12);
   for (int r = 3; r <= 9; ++r) grid.setBlocked(Cell{r, 6}, true);
   const CellPath leg = {{6, 2}, {5, 3}, {4, 4}, {3, 5}, {2, 6}, {3, 7}, {4, 8}, {5, 9}, {6, 9}};
   const eaci::LegDistanceField field(grid, leg, Cell{6, 9});
@@ -85,7 +85,7 @@ TEST(LegDistanceField, ExactInsideTheWindowAndNeverBetterOutside) {
 }
 
 TEST(LegDistanceField, CellsOutsideTheWindowReadAsFarAway) {
-  const BinaryGrid grid = emptyGrid(40, 40);
+  const CostGrid grid = emptyGrid(40, 40);
   const CellPath leg = {{20, 20}, {20, 21}, {20, 22}};
   const eaci::LegDistanceField field(grid, leg, Cell{20, 22});
   // The window is the leg plus a margin of 4: (20, 30) lies outside it.

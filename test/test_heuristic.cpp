@@ -28,7 +28,7 @@ TEST(Heuristic, FirstMoveOfARouteHasNoTurningCost) {
 
 // Hand-computed eta values, read from the walk the solver runs (beta = 1, so the weight is eta).
 TEST(Heuristic, EtaValues) {
-  const auto grid = eaci::BinaryGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
+  const auto grid = eaci::CostGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
   const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   const eaci::Cell from{0, 0};
   // Target (0, 5): the east move lands on (0, 1), 4 cells from it.
@@ -52,7 +52,7 @@ TEST(Heuristic, FastInversePowerEqualsPow) {
 
 TEST(Heuristic, WalkWeightIsEtaToTheBetaOfEquationSixteen) {
   // The walk's tabulated weight must equal (1 / (d_jg + sigma))^beta computed from the equations.
-  const auto grid = eaci::BinaryGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
+  const auto grid = eaci::CostGrid::fromRows(std::vector<std::vector<int>>(6, std::vector<int>(6, 0)), false);
   const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
   const eaci::WalkSetup setup(grid, field, {eaci::Cell{0, 0}, eaci::Cell{5, 4}}, eaci::HeuristicRule::kTurningAware,
                               7.0, 0.5);

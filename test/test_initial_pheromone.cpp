@@ -5,7 +5,7 @@
 
 #include "eaci/aco/initial_pheromone.hpp"
 
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 namespace {
@@ -21,7 +21,7 @@ TEST(InitialPheromone, LineThroughTwoCentres) {
 TEST(InitialPheromone, HandComputedRegion) {
   // 3 rows x 4 columns, islands (2,0) -> (0,2): centres (0.5,0.5) and (2.5,2.5), the line y = x.
   // The region is columns 0-2; column 3 lies outside.
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}}, true);
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}}, true);
   const double lambda = 3.0;
   const auto field = eaci::initialIslandPheromone(grid, {Cell{2, 0}, Cell{0, 2}}, lambda, 1.0);
   const double sqrt2 = std::sqrt(2.0);
@@ -50,14 +50,14 @@ TEST(InitialPheromone, EdgeInTwoRegionsTakesTheLargerValue) {
   // (1,2) -> (0,2) is in both. Region 1 (cols 2-3): line x + y - 4 = 0, midpoint (2.5, 1)
   // is 0.5/sqrt2 away -> 2 sqrt2. Region 2 (cols 0-2): line x - 2y + 0.5 = 0, 1/sqrt5 away
   // -> sqrt5. The larger, 2 sqrt2, must win although region 2 comes last.
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}}, true);
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}}, true);
   const auto field = eaci::initialIslandPheromone(grid, {Cell{1, 3}, Cell{0, 2}, Cell{1, 0}}, 3.0, 1.0);
   EXPECT_NEAR(field.tau(grid.index(Cell{1, 2}), kNorth), 2.0 * std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(field.tau(grid.index(Cell{0, 2}), 6), 2.0 * std::sqrt(2.0), 1e-12);
 }
 
 TEST(InitialPheromone, WeightsAreTauToTheAlpha) {
-  const BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, true);
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, true);
   const auto field = eaci::initialIslandPheromone(grid, {Cell{2, 0}, Cell{0, 2}}, 3.0, 1.1);
   const std::size_t i = grid.index(Cell{2, 0});
   EXPECT_NEAR(field.weight(i, kEast), std::pow(2.0 * std::sqrt(2.0), 1.1), 1e-12);

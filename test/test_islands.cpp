@@ -9,16 +9,16 @@
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 namespace {
-std::vector<Cell> islandsOn(const BinaryGrid& grid, Cell s, Cell e, int n) {
-  const BinaryGrid aux = eaci::auxiliaryMap(grid, s, e);
+std::vector<Cell> islandsOn(const CostGrid& grid, Cell s, Cell e, int n) {
+  const CostGrid aux = eaci::auxiliaryMap(grid, s, e);
   return eaci::paperIslands(aux, eaci::reachableFrom(grid, s), s, e, n);
 }
-BinaryGrid emptyGrid(int rows, int cols) {
-  return BinaryGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false);
+CostGrid emptyGrid(int rows, int cols) {
+  return CostGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false);
 }
 }  // namespace
 
@@ -48,7 +48,7 @@ TEST(Islands, StepOverAnObstacleOnTheLineAndMayExceedN) {
   // 7 x 7, obstacle at (3,3), S = (3,0), E = (3,6), N = 3: r_s = 3.
   // From S the on-line cells (3,1), (3,2) tie at D = 6 -> (3,2), nearer E. From (3,2),
   // (3,5) is within 3, on the line and nearest E. Then E is within r_s.
-  BinaryGrid grid = emptyGrid(7, 7);
+  CostGrid grid = emptyGrid(7, 7);
   grid.setBlocked(Cell{3, 3}, true);
   EXPECT_EQ(islandsOn(grid, Cell{3, 0}, Cell{3, 6}, 3),
             (std::vector<Cell>{{3, 0}, {3, 2}, {3, 5}, {3, 6}}));
@@ -56,7 +56,7 @@ TEST(Islands, StepOverAnObstacleOnTheLineAndMayExceedN) {
 
 TEST(Islands, NeverInAPocketThatCannotBeReachedFromStart) {
   // A 3 x 3 free pocket sealed by a ring (rows 0-4, cols 3-7) sits on the straight line.
-  BinaryGrid grid = emptyGrid(7, 11);
+  CostGrid grid = emptyGrid(7, 11);
   for (int c = 3; c <= 7; ++c) {
     grid.setBlocked(Cell{0, c}, true);
     grid.setBlocked(Cell{4, c}, true);
@@ -80,7 +80,7 @@ TEST(Islands, NeverInAPocketThatCannotBeReachedFromStart) {
 
 TEST(Islands, AdvanceStrictlyTowardTheGoalAndEndAtIt) {
   for (const auto& pc : eaci::test::paperCases()) {
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
     for (int n : {2, 3, 6, 9, 12}) {
       const auto islands = islandsOn(grid, pc.start, pc.goal, n);
       ASSERT_GE(islands.size(), 2u);
@@ -99,7 +99,7 @@ TEST(Islands, PaperFortyMapGivesThePapersLength) {
   // The spec's reading reproduces the paper's 40x40 EACI figure: with N = 9, 11 islands, and
   // the shortest route through them is 59.2548 = 58.0833 + 2(2 - sqrt2). With N = 6 the
   // islands differ (7 of them) but the route through them is 59.2548 as well.
-  const BinaryGrid grid = eaci::test::paperMap("paper-40x40.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-40x40.txt", true);
   for (int n : {6, 9}) {
     const auto islands = islandsOn(grid, Cell{0, 0}, Cell{39, 39}, n);
     if (n == 9) {

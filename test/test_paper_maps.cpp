@@ -8,13 +8,13 @@
 #include "test_support.hpp"
 
 using eaci::Algorithm;
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 namespace {
 
 // Shortest route that visits the islands in order: A* leg by leg.
-double shortestRouteThrough(const BinaryGrid& grid, const std::vector<Cell>& islands) {
+double shortestRouteThrough(const CostGrid& grid, const std::vector<Cell>& islands) {
   double total = 0.0;
   for (std::size_t k = 0; k + 1 < islands.size(); ++k) {
     const auto leg = eaci::shortestPath(grid, islands[k], islands[k + 1]);
@@ -31,7 +31,7 @@ struct MapRuns {
 
 MapRuns runEaciTwentySeeds(const eaci::test::PaperCase& pc,
                            eaci::IslandStrategy strategy = eaci::IslandStrategy::kPaper) {
-  const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+  const CostGrid grid = eaci::test::paperMap(pc.file, true);
   MapRuns stats;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     eaci::Parameters p;
@@ -88,7 +88,7 @@ TEST(PaperMaps, EaciFindsTheRouteThroughItsIslandsWhereLegsDoNotOverlap) {
 }
 
 TEST(PaperMaps, FortyMapEaciRouteIsThePapersFigure) {
-  const BinaryGrid grid = eaci::test::paperMap("paper-40x40.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-40x40.txt", true);
   eaci::Parameters p;
   p.allow_corner_cutting = true;
   p.island_strategy = eaci::IslandStrategy::kPaper;
@@ -106,7 +106,7 @@ TEST(PaperMaps, GeodesicIslandsReachTheGlobalOptimumEveryRun) {
   for (const auto& pc : eaci::test::paperCases()) {
     const MapRuns stats = runEaciTwentySeeds(pc, eaci::IslandStrategy::kGeodesic);
     EXPECT_EQ(stats.through_islands_optimal, 20) << pc.file;
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
     eaci::Parameters p;
     p.allow_corner_cutting = true;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -119,7 +119,7 @@ TEST(PaperMaps, GeodesicIslandsReachTheGlobalOptimumEveryRun) {
 
 TEST(PaperMaps, ClassicAcoFindsValidRoutes) {
   for (const auto& pc : eaci::test::paperCases()) {
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
     eaci::Parameters p;
     p.allow_corner_cutting = true;
     p.seed = 3;
@@ -135,7 +135,7 @@ TEST(PaperMaps, ClassicAcoFindsValidRoutes) {
 TEST(PaperMaps, EaciLosesFewerAntsThanClassicAco) {
   // The paper's central claim (Tables 1-3), on the 30x30 map, same seeds.
   const auto& pc = eaci::test::paperCases()[1];
-  const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+  const CostGrid grid = eaci::test::paperMap(pc.file, true);
   long long eaci_lost = 0, aco_lost = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     eaci::Parameters p;
@@ -153,7 +153,7 @@ TEST(PaperMaps, ClassicAcoDefaultsSitWithinAFactorTwoOfThePapersAcoRow) {
   const double paper_lost[] = {1246, 3112, 3994, 3989};
   const auto& cases = eaci::test::paperCases();
   for (std::size_t m = 0; m < cases.size(); ++m) {
-    const BinaryGrid grid = eaci::test::paperMap(cases[m].file, true);
+    const CostGrid grid = eaci::test::paperMap(cases[m].file, true);
     double iterations = 0.0, lost = 0.0;
     constexpr int kRuns = 20;
     for (std::uint64_t seed = 1; seed <= kRuns; ++seed) {

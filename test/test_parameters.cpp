@@ -20,6 +20,11 @@ TEST(Parameters, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(p.epsilon, 0.5);
   EXPECT_FALSE(p.allow_corner_cutting);
   EXPECT_EQ(p.island_strategy, eaci::IslandStrategy::kGeodesic);
+  // The cost model: global_planner's defaults, unknown cells closed.
+  EXPECT_DOUBLE_EQ(p.neutral_cost, 50.0);
+  EXPECT_DOUBLE_EQ(p.cost_factor, 3.0);
+  EXPECT_EQ(p.lethal_cost, 253);
+  EXPECT_FALSE(p.allow_unknown);
   EXPECT_EQ(eaci::validationError(p), "");
 }
 
@@ -48,6 +53,12 @@ TEST(Parameters, EachBadValueGetsItsOwnReason) {
       {[](auto& p) { p.aco_rho = 1.5; }, "aco_rho"},
       {[](auto& p) { p.early_stop_iterations = -1; }, "early_stop_iterations"},
       {[](auto& p) { p.threads = -1; }, "threads"},
+      {[](auto& p) { p.neutral_cost = 0; }, "neutral_cost must be a number in (0, 1e6]"},
+      {[&](auto& p) { p.neutral_cost = nan; }, "neutral_cost"},
+      {[](auto& p) { p.cost_factor = -0.5; }, "cost_factor must be a number in [0, 1e6]"},
+      {[&](auto& p) { p.cost_factor = inf; }, "cost_factor"},
+      {[](auto& p) { p.lethal_cost = 0; }, "lethal_cost must be in 1..255"},
+      {[](auto& p) { p.lethal_cost = 256; }, "lethal_cost"},
   };
   for (const auto& c : cases) {
     eaci::Parameters p;
@@ -65,11 +76,15 @@ TEST(Parameters, SetByName) {
   eaci::setParameter(p, "allow_corner_cutting", "true");
   eaci::setParameter(p, "island_strategy", "paper");
   eaci::setParameter(p, "seed", "42");
+  eaci::setParameter(p, "cost_factor", "0");
+  eaci::setParameter(p, "allow_unknown", "yes");
   EXPECT_EQ(p.ants, 20);
   EXPECT_DOUBLE_EQ(p.alpha, 1.5);
   EXPECT_TRUE(p.allow_corner_cutting);
   EXPECT_EQ(p.seed, 42u);
-  EXPECT_EQ(eaci::parameterNames().size(), 17u);
+  EXPECT_EQ(p.cost_factor, 0.0);
+  EXPECT_TRUE(p.allow_unknown);
+  EXPECT_EQ(eaci::parameterNames().size(), 21u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

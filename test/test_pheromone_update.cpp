@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "eaci/aco/pheromone_update.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 using eaci::AntRoute;
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 
 namespace {
@@ -16,26 +16,26 @@ constexpr int kEast = 0, kNorthEast = 1, kSouthEast = 7;
 // 2 x 3 map, S = (0,0), E = (0,2), d_SE = 2. Route A: east, east (length 2).
 // Route B: south-east, north-east (length 2 sqrt2). Route C: a lost ant.
 struct Fixture {
-  BinaryGrid grid = BinaryGrid::fromRows({{0, 0, 0}, {0, 0, 0}}, true);
+  CostGrid grid = CostGrid::fromRows({{0, 0, 0}, {0, 0, 0}}, true);
   std::vector<AntRoute> routes;
   Fixture() {
     AntRoute a;
     a.reset(static_cast<std::uint32_t>(grid.index(Cell{0, 0})));
     a.cells = {0, 1, 2};
     a.dirs = {kEast, kEast};
-    a.length = 2.0;
+    a.length = a.cost = 2.0;  // a binary map: L_k, the cost, is the length
     a.complete = true;
     AntRoute b;
     b.reset(0);
     b.cells = {0, 4, 2};
     b.dirs = {kSouthEast, kNorthEast};
-    b.length = 2.0 * std::sqrt(2.0);
+    b.length = b.cost = 2.0 * std::sqrt(2.0);
     b.complete = true;
     AntRoute c;
     c.reset(0);
     c.cells = {0, 3};
     c.dirs = {6};
-    c.length = 1.0;
+    c.length = c.cost = 1.0;
     c.complete = false;
     routes = {a, b, c};
   }
@@ -71,7 +71,7 @@ TEST(PheromoneUpdate, PenaltyNeverDrivesPheromoneToZero) {
   Fixture f;
   eaci::PheromoneField field(f.grid.cellCount(), 1e-6, 1.0);
   f.routes[1].complete = false;
-  f.routes[0].length = 2.0;
+  f.routes[0].length = f.routes[0].cost = 2.0;
   // Best and worst the same route: reward and penalty cancel, tau stays positive everywhere.
   eaci::adaptivePheromoneUpdate(field, f.routes, 0, 0, 1.3, 100.0, 2.0);
   for (std::size_t cell = 0; cell < f.grid.cellCount(); ++cell)

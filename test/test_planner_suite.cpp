@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 
 using eaci::Algorithm;
-using eaci::BinaryGrid;
+using eaci::CostGrid;
 using eaci::Cell;
 using eaci::PlanStatus;
 
@@ -23,8 +23,8 @@ eaci::Parameters quickParameters() {
 }
 
 // 8 x 8 room with an L-shaped wall and a sealed 2 x 2 pocket in the bottom-right corner.
-BinaryGrid room(bool cutting) {
-  return BinaryGrid::fromRows({{0, 0, 0, 0, 0, 0, 0, 0},
+CostGrid room(bool cutting) {
+  return CostGrid::fromRows({{0, 0, 0, 0, 0, 0, 0, 0},
                                {0, 0, 0, 0, 0, 0, 0, 0},
                                {0, 0, 1, 1, 1, 1, 0, 0},
                                {0, 0, 0, 0, 0, 1, 0, 0},
@@ -55,7 +55,7 @@ class PlannerSuite : public ::testing::TestWithParam<Planner> {
 }  // namespace
 
 TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
-  const BinaryGrid grid = room(false);
+  const CostGrid grid = room(false);
   const Cell pairs[][2] = {{{0, 0}, {7, 0}}, {{4, 4}, {0, 7}}, {{7, 4}, {0, 0}}, {{3, 3}, {4, 6}}};
   for (const auto& pair : pairs) {
     const auto r = eaci::plan(grid, pair[0], pair[1], algorithm(), parameters());
@@ -68,7 +68,7 @@ TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
 }
 
 TEST_P(PlannerSuite, StraightCorridorGivesTheOnlyRoute) {
-  const BinaryGrid grid = BinaryGrid::fromRows({{1, 1, 1, 1, 1}, {0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}}, false);
+  const CostGrid grid = CostGrid::fromRows({{1, 1, 1, 1, 1}, {0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}}, false);
   const auto r = eaci::plan(grid, Cell{1, 0}, Cell{1, 4}, algorithm(), parameters());
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_DOUBLE_EQ(r.length, 4.0);
@@ -95,17 +95,17 @@ TEST_P(PlannerSuite, GoalInASealedPocketHasNoPath) {
 TEST_P(PlannerSuite, DiagonalGapIsAPassageOnlyWithCornerCutting) {
   // Obstacles touching at their corners split this map in two unless a diagonal may pass between them.
   const std::vector<std::vector<int>> rows = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
-  const auto strict = eaci::plan(BinaryGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2}, algorithm(),
+  const auto strict = eaci::plan(CostGrid::fromRows(rows, false), Cell{0, 0}, Cell{2, 2}, algorithm(),
                                  parameters());
   EXPECT_EQ(strict.status, PlanStatus::kNoPath);
-  const auto cutting = eaci::plan(BinaryGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2}, algorithm(),
+  const auto cutting = eaci::plan(CostGrid::fromRows(rows, true), Cell{0, 0}, Cell{2, 2}, algorithm(),
                                   parameters());
   ASSERT_TRUE(cutting.success()) << cutting.error;
   EXPECT_NEAR(cutting.length, 2.0 + std::sqrt(2.0), 1e-9);
 }
 
 TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
-  const BinaryGrid grid = room(false);
+  const CostGrid grid = room(false);
   const auto params = parameters();
   struct Case {
     Cell start, goal;
@@ -121,7 +121,7 @@ TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
     EXPECT_NE(r.error.find(c.mentions), std::string::npos) << r.error;
     EXPECT_TRUE(r.path.empty());
   }
-  const auto empty = eaci::plan(BinaryGrid(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
+  const auto empty = eaci::plan(CostGrid(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
   EXPECT_EQ(empty.status, PlanStatus::kInvalidInput);
   EXPECT_NE(empty.error.find("no cells"), std::string::npos);
   const auto empty_view = eaci::plan(eaci::GridView(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
@@ -134,11 +134,11 @@ TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
 }
 
 TEST_P(PlannerSuite, OneByOneMaps) {
-  const BinaryGrid free_cell = BinaryGrid::fromRows({{0}}, false);
+  const CostGrid free_cell = CostGrid::fromRows({{0}}, false);
   EXPECT_TRUE(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).success());
   EXPECT_EQ(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 1}, algorithm(), parameters()).status,
             PlanStatus::kInvalidInput);
-  const BinaryGrid wall = BinaryGrid::fromRows({{1}}, false);
+  const CostGrid wall = CostGrid::fromRows({{1}}, false);
   EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).status, PlanStatus::kInvalidInput);
 }
 
@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(AllPlanners, PlannerSuite,
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
-  const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
     eaci::Parameters p;
     p.island_strategy = eaci::IslandStrategy::kPaper;  // more lost ants: differences would show
@@ -199,14 +199,14 @@ TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
 TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
   // Never allocated: the check runs on the dimensions. A* has no pheromone and is not capped.
   const std::size_t side = 5000;  // 25 M cells * 128 B = 3 GiB > 2 GiB
-  const BinaryGrid grid(static_cast<int>(side), static_cast<int>(side), false);
+  const CostGrid grid(static_cast<int>(side), static_cast<int>(side), false);
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 1}, Algorithm::kEaci, quickParameters());
   EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
   EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;
 }
 
 TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {
-  const BinaryGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
   eaci::PlanOptions options;
   options.should_stop = [](int done) { return done >= 3; };
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, eaci::Parameters{}, options);
@@ -218,7 +218,7 @@ TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {
 TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
   // A stop check that is true from the start: asked between the set-up steps, it ends the
   // plan before any ant walks, even with the pheromone picture asked for.
-  const BinaryGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
   eaci::PlanOptions options;
   options.record_pheromone = true;
   int asked = 0;
@@ -236,7 +236,7 @@ TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
 }
 
 TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
-  const BinaryGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   eaci::Parameters p;
   p.allow_corner_cutting = true;
   p.early_stop_iterations = 5;
@@ -247,7 +247,7 @@ TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
 }
 
 TEST_P(PlannerSuite, AllObstacleMapIsAClearError) {
-  const BinaryGrid walls = BinaryGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 1)), false);
+  const CostGrid walls = CostGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 1)), false);
   const auto r = eaci::plan(walls, Cell{0, 0}, Cell{4, 4}, algorithm(), parameters());
   EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
   EXPECT_NE(r.error.find("in an obstacle"), std::string::npos) << r.error;
@@ -257,14 +257,14 @@ TEST_P(PlannerSuite, MoreIslandsThanTheRouteHasCells) {
   // N far above the route's length: r_s drops below one cell; planning still works.
   eaci::Parameters p = parameters();
   p.islands = 100000;
-  const BinaryGrid grid = room(false);
+  const CostGrid grid = room(false);
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{7, 0}, algorithm(), p);
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{7, 0}), "");
 }
 
 TEST_P(PlannerSuite, StartAndGoalOnTheMapEdge) {
-  const BinaryGrid grid = room(false);
+  const CostGrid grid = room(false);
   const auto r = eaci::plan(grid, Cell{0, 7}, Cell{7, 0}, algorithm(), parameters());  // two corners
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 7}, Cell{7, 0}), "");
@@ -274,7 +274,7 @@ TEST(PlannerThreads, AntsOnFourThreadsOnEveryPaperMap) {
   // Run under ThreadSanitizer by scripts/sanitize.sh: the ants of an iteration share the
   // pheromone (read-only) and write only their own routes.
   for (const auto& pc : eaci::test::paperCases()) {
-    const BinaryGrid grid = eaci::test::paperMap(pc.file, true);
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
     for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
       eaci::Parameters p;
       p.allow_corner_cutting = true;

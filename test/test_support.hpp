@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/io/map_io.hpp"
 
 namespace eaci::test {
@@ -21,11 +21,11 @@ inline std::string mapsDir() {
   return env != nullptr && *env != '\0' ? std::string(env) : std::string(EACI_SOURCE_DIR "/maps/paper");
 }
 
-// A paper benchmark map (maps/paper/<name>) as a BinaryGrid; a missing file fails the test
+// A paper benchmark map (maps/paper/<name>) as a CostGrid; a missing file fails the test
 // with the loader's message (it names the path).
-inline BinaryGrid paperMap(const std::string& name, bool allow_corner_cutting) {
+inline CostGrid paperMap(const std::string& name, bool allow_corner_cutting) {
   const OccupancyMap map = loadMatrixText(mapsDir() + "/" + name);
-  return BinaryGrid::fromView(map.view(), allow_corner_cutting);
+  return CostGrid::fromView(map.view(), allow_corner_cutting);
 }
 
 // The paper maps with their start and goal cells and optima (maps/paper/README.md).
@@ -50,7 +50,7 @@ inline const std::vector<PaperCase>& paperCases() {
 // Checks the route properties every planner must give, from first principles:
 // starts at S, ends at E, consecutive cells 8-neighbours, every cell free, no cell
 // twice, no corner cut unless allowed. Returns "" or what is wrong.
-inline std::string routeDefect(const BinaryGrid& grid, const CellPath& path, Cell start, Cell goal) {
+inline std::string routeDefect(const CostGrid& grid, const CellPath& path, Cell start, Cell goal) {
   if (path.empty()) return "empty path";
   if (!(path.front() == start)) return "does not start at S";
   if (!(path.back() == goal)) return "does not end at E";

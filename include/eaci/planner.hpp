@@ -10,7 +10,7 @@
 
 #include "eaci/aco/parameters.hpp"
 #include "eaci/aco/solvers.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/metrics/path_metrics.hpp"
 #include "eaci/search/astar.hpp"
@@ -58,14 +58,17 @@ struct PlanResult {
   std::string error;               // one line, empty on success
   Algorithm algorithm = Algorithm::kEaci;
   CellPath path;                   // start first, goal last
-  double length = std::numeric_limits<double>::infinity();  // cells
+  double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost): L_k
+  double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
   double total_turn_deg = 0.0;
-  int iterations_to_converge = 0;  // iteration that first reached the final length (0 for A*)
+  int iterations_to_converge = 0;  // iteration that first reached the final cost (0 for A*)
   int iterations_run = 0;
   bool stopped_early = false;
   bool interrupted = false;
   long long lost_ants_total = 0;
   std::vector<int> lost_ants_per_iteration;
+  // The route quality L_k per iteration: the cost (the length on a binary map; the names are
+  // the paper's, whose maps are binary).
   std::vector<double> iteration_best_length;  // +infinity where no ant arrived
   std::vector<double> best_length_so_far;
   std::vector<Cell> islands;       // EACI: S, islands, E; ACO and A*: S, E
@@ -91,7 +94,7 @@ inline PlanResult failure(Algorithm algorithm, PlanStatus status, const std::str
 }
 
 // "" when start and goal are usable on this grid, else the reason.
-inline std::string endpointError(const BinaryGrid& grid, Cell c, const char* name) {
+inline std::string endpointError(const CostGrid& grid, Cell c, const char* name) {
   std::ostringstream e;
   if (!grid.contains(c))
     e << name << " " << describe(c) << " is off the map (" << grid.height() << " rows x " << grid.width() << " columns)";
@@ -100,7 +103,7 @@ inline std::string endpointError(const BinaryGrid& grid, Cell c, const char* nam
   return e.str();
 }
 
-inline void fillFromColony(const BinaryGrid& grid, const ColonyResult& colony, const PlanOptions& options,
+inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, const PlanOptions& options,
                            PlanResult& r) {
   r.islands = colony.waypoints;
   r.iterations_run = colony.run.iterations_run;
@@ -109,8 +112,8 @@ inline void fillFromColony(const BinaryGrid& grid, const ColonyResult& colony, c
   r.interrupted = colony.run.interrupted;
   r.lost_ants_per_iteration = colony.run.lost_ants_per_iteration;
   for (int lost : r.lost_ants_per_iteration) r.lost_ants_total += lost;
-  r.iteration_best_length = colony.run.iteration_best_length;
-  r.best_length_so_far = colony.run.best_length_so_far;
+  r.iteration_best_length = colony.run.iteration_best_cost;
+  r.best_length_so_far = colony.run.best_cost_so_far;
   for (std::uint32_t index : colony.run.best_cells) r.path.push_back(grid.cellAt(index));
   if (options.record_pheromone && colony.pheromone.cellCount() == grid.cellCount()) {
     r.pheromone.resize(grid.cellCount());
@@ -120,11 +123,22 @@ inline void fillFromColony(const BinaryGrid& grid, const ColonyResult& colony, c
 
 }  // namespace detail
 
-inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
+// The move cost rule the parameters ask for.
+inline CostRule costRule(const Parameters& params) { return CostRule{params.neutral_cost, params.cost_factor}; }
+
+// Plans on `grid` with the move costs of `params` (neutral_cost, cost_factor), whatever rule
+// the grid was built with.
+inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
                        const PlanOptions& options = {}) {
   using detail::failure;
   const std::string parameter_error = validationError(params);
   if (!parameter_error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, "invalid parameter: " + parameter_error);
+  const CostRule rule = costRule(params);
+  if (grid.costRule().neutral_cost != rule.neutral_cost || grid.costRule().cost_factor != rule.cost_factor) {
+    CostGrid ruled = grid;
+    ruled.setCostRule(rule);
+    return plan(ruled, start, goal, algorithm, params, options);
+  }
   if (grid.cellCount() == 0) return failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
   for (const auto& [cell, name] : {std::pair<Cell, const char*>{start, "start"}, {goal, "goal"}}) {
     const std::string error = detail::endpointError(grid, cell, name);
@@ -143,6 +157,7 @@ inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm 
   if (start == goal) {  // nothing to search: the route is the start cell itself
     r.status = PlanStatus::kSuccess;
     r.path = {start};
+    r.cost = 0.0;
     r.length = 0.0;
     r.islands = {start};
     return r;
@@ -175,15 +190,19 @@ inline PlanResult plan(const BinaryGrid& grid, Cell start, Cell goal, Algorithm 
     return r;
   }
   r.status = PlanStatus::kSuccess;
+  r.cost = routeCost(grid, r.path);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
   return r;
 }
 
+// The view's interpretation says which cells are obstacles and what the others cost (its
+// makers build it from lethal_cost and allow_unknown: CellInterpretation::costmap, the loaders).
 inline PlanResult plan(const GridView& view, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
                        const PlanOptions& options = {}) {
   if (view.empty()) return detail::failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
-  return plan(BinaryGrid::fromView(view, params.allow_corner_cutting), start, goal, algorithm, params, options);
+  return plan(CostGrid::fromView(view, params.allow_corner_cutting, costRule(params)), start, goal, algorithm, params,
+              options);
 }
 
 }  // namespace eaci

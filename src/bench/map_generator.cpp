@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "eaci/aco/random.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/astar.hpp"
 
 namespace eaci_bench {
@@ -157,7 +157,7 @@ GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed) {
     g.start = eaci::Cell{0, 0};
     g.goal = eaci::Cell{size - 1, size - 1};
     g.obstacle_fraction = obstacleFraction(g.map);
-    const eaci::BinaryGrid grid = eaci::BinaryGrid::fromView(g.map.view(), false);
+    const eaci::CostGrid grid = eaci::CostGrid::fromView(g.map.view(), false);
     const eaci::ShortestPath shortest = eaci::shortestPath(grid, g.start, g.goal);
     if (!shortest.found) continue;
     g.optimum = shortest.length;

@@ -44,7 +44,7 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
 
 eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free) {
   eaci::CellInterpretation interpretation;
-  interpretation.obstacle_threshold = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
+  interpretation.lethal_cost = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
   interpretation.unknown_value = 255;  // int8 -1
   interpretation.unknown = unknown_is_free ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
   const std::size_t cells = static_cast<std::size_t>(grid.info.width) * grid.info.height;

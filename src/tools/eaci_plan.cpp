@@ -25,7 +25,7 @@
 #include "cli_args.hpp"
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/aco/parameters.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/cell_numbering.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
@@ -173,8 +173,8 @@ std::string baseName(const std::string& path) {
 // Free cells of the original map that EACI's auxiliary map (Eq. 12) blocks.
 std::vector<std::uint8_t> auxiliaryBlocked(const eaci::OccupancyMap& map, eaci::UnknownPolicy unknown,
                                            const eaci::Parameters& params, eaci::Cell start, eaci::Cell goal) {
-  const eaci::BinaryGrid grid = eaci::BinaryGrid::fromView(map.view(unknown), params.allow_corner_cutting);
-  const eaci::BinaryGrid aux = eaci::auxiliaryMap(grid, start, goal);
+  const eaci::CostGrid grid = eaci::CostGrid::fromView(map.view(unknown), params.allow_corner_cutting);
+  const eaci::CostGrid aux = eaci::auxiliaryMap(grid, start, goal);
   std::vector<std::uint8_t> blocked(grid.cellCount(), 0);
   for (std::size_t i = 0; i < blocked.size(); ++i) {
     const eaci::Cell c = grid.cellAt(i);

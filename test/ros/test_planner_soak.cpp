@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/search/astar.hpp"
 #include "route_check.hpp"
@@ -84,7 +84,7 @@ TEST(PlannerSoak, AThousandRandomPlansAreValidAndTheNodeDoesNotGrow) {
   // The node plans through unknown cells (allow_unknown); the lab map has none, so free here
   // means free there.
   for (std::uint8_t v : map.cells) ASSERT_NE(v, eaci::kUnknownValue);
-  const eaci::BinaryGrid grid = eaci::BinaryGrid::fromView(map.view(), false);
+  const eaci::CostGrid grid = eaci::CostGrid::fromView(map.view(), false);
   std::vector<eaci::Cell> free_cells;
   for (int r = 0; r < map.height; ++r)
     for (int c = 0; c < map.width; ++c)

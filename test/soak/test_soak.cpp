@@ -25,8 +25,8 @@ double residentMiB() {
 }
 
 // A random map: blocks of 1-5 cells covering about a quarter of it.
-eaci::BinaryGrid generatedMap(int rows, int cols, eaci::SplitMix64& rng) {
-  eaci::BinaryGrid grid(cols, rows, false);
+eaci::CostGrid generatedMap(int rows, int cols, eaci::SplitMix64& rng) {
+  eaci::CostGrid grid(cols, rows, false);
   const int blocks = rows * cols / 20;
   for (int k = 0; k < blocks; ++k) {
     const int r = static_cast<int>(rng.next() % rows), c = static_cast<int>(rng.next() % cols);
@@ -37,7 +37,7 @@ eaci::BinaryGrid generatedMap(int rows, int cols, eaci::SplitMix64& rng) {
   return grid;
 }
 
-eaci::Cell randomFreeCell(const eaci::BinaryGrid& grid, eaci::SplitMix64& rng) {
+eaci::Cell randomFreeCell(const eaci::CostGrid& grid, eaci::SplitMix64& rng) {
   for (;;) {
     const eaci::Cell c{static_cast<int>(rng.next() % static_cast<unsigned>(grid.height())),
                        static_cast<int>(rng.next() % static_cast<unsigned>(grid.width()))};
@@ -49,7 +49,7 @@ struct Tally {
   int plans = 0, routes = 0, no_path = 0, ants_all_lost = 0;
 };
 
-void planRandomly(const eaci::BinaryGrid& grid, int plans, eaci::SplitMix64& rng, Tally& tally) {
+void planRandomly(const eaci::CostGrid& grid, int plans, eaci::SplitMix64& rng, Tally& tally) {
   eaci::Parameters params;
   params.early_stop_iterations = 5;  // soak is about validity and memory, not route quality
   for (int k = 0; k < plans; ++k) {
@@ -88,7 +88,7 @@ void planRandomly(const eaci::BinaryGrid& grid, int plans, eaci::SplitMix64& rng
 
 TEST(Soak, TenThousandRandomPlansStayValidAndDoNotGrow) {
   const eaci::OccupancyMap lab = eaci::loadMap(std::string(EACI_SOURCE_DIR) + "/maps/lab.yaml");
-  const eaci::BinaryGrid lab_grid = eaci::BinaryGrid::fromView(lab.view(), false);
+  const eaci::CostGrid lab_grid = eaci::CostGrid::fromView(lab.view(), false);
   eaci::SplitMix64 rng(2026);
   Tally tally;
   const auto begin = std::chrono::steady_clock::now();
@@ -96,7 +96,7 @@ TEST(Soak, TenThousandRandomPlansStayValidAndDoNotGrow) {
   const double warm = residentMiB();
   planRandomly(lab_grid, 5000, rng, tally);
   for (int m = 0; m < 40; ++m) {
-    const eaci::BinaryGrid grid = generatedMap(30 + 2 * m, 40 + 2 * m, rng);
+    const eaci::CostGrid grid = generatedMap(30 + 2 * m, 40 + 2 * m, rng);
     planRandomly(grid, 100, rng, tally);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

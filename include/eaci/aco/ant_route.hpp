@@ -9,12 +9,14 @@ namespace eaci {
 struct AntRoute {
   bool complete = false;              // reached E; a lost ant's route is incomplete
   double length = 0.0;                // cells: straight step 1, diagonal sqrt 2
+  double cost = 0.0;                  // L_k: the sum of its move costs (= length on a binary map)
   std::vector<std::uint32_t> cells;   // grid indices, start first
   std::vector<std::uint8_t> dirs;     // dirs[k]: direction of the move cells[k] -> cells[k+1]
 
   void reset(std::uint32_t start) {
     complete = false;
     length = 0.0;
+    cost = 0.0;
     cells.clear();
     dirs.clear();
     cells.push_back(start);

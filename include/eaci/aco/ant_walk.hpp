@@ -13,7 +13,7 @@
 #include "eaci/aco/leg_distance_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/aco/random.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
 
@@ -79,12 +79,12 @@ class InversePower {
 
 // Everything an ant reads; shared by all ants of an iteration and never written during it.
 struct WalkSetup {
-  const BinaryGrid* grid = nullptr;
+  const CostGrid* grid = nullptr;
   const PheromoneField* pheromone = nullptr;
   std::vector<Cell> waypoints;                // L_1 = S, ..., L_N = E
   std::vector<std::int32_t> waypoint_of_cell;  // per grid cell: its index in `waypoints`, or -1
   // d_jg of the heuristic: empty -> Euclidean distance to the leg's goal (the paper);
-  // else leg_distance[z] is the grid distance to waypoint z (geodesic islands).
+  // else leg_distance[z] is the route cost to waypoint z (geodesic islands).
   std::vector<LegDistanceField> leg_distance;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   InversePower eta_power{7.0};                // x -> x^-beta
@@ -97,7 +97,7 @@ struct WalkSetup {
   std::vector<std::vector<float>> distance_table;
   static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
 
-  WalkSetup(const BinaryGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
+  WalkSetup(const CostGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
             double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
       : grid(&g), pheromone(&field), waypoints(std::move(points)), waypoint_of_cell(g.cellCount(), -1),
         leg_distance(std::move(leg_distances)), heuristic(rule), eta_power(beta), moves(g.cellCount(), 0) {
@@ -160,7 +160,7 @@ class AntWalker {
   // the islands in order. When its current goal is an allowed neighbour it takes it at once
   // (the d = 0 guard of Eq. 9). An ant with no allowed move is lost: route.complete = false.
   void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route) {
-    const BinaryGrid& grid = *setup.grid;
+    const CostGrid& grid = *setup.grid;
     beginWalk(grid.cellCount());
     std::uint32_t current = static_cast<std::uint32_t>(grid.index(setup.waypoints.front()));
     route.reset(current);
@@ -204,6 +204,7 @@ class AntWalker {
       route.cells.push_back(next);
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);
+      route.cost += grid.moveCostInto(next, chosen);
       visit(next);
       previous_dir = chosen;
       current = next;

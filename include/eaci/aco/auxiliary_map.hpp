@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
 
@@ -16,9 +16,9 @@ enum class AuxiliaryBorder { kFree, kObstacle };
 // Eq. 12: a free cell becomes an obstacle when two perpendicular 4-neighbours
 // are obstacles: (left & up), (up & right), (right & down) or (down & left).
 // One pass reading the original map only; `start` and `goal` are never converted.
-inline BinaryGrid auxiliaryMap(const BinaryGrid& original, Cell start, Cell goal,
+inline CostGrid auxiliaryMap(const CostGrid& original, Cell start, Cell goal,
                                AuxiliaryBorder border = AuxiliaryBorder::kFree) {
-  BinaryGrid aux = original;
+  CostGrid aux = original;
   auto blocked = [&](int r, int c) {
     const Cell n{r, c};
     if (!original.contains(n)) return border == AuxiliaryBorder::kObstacle;

@@ -1,5 +1,6 @@
 // The iteration loop of an ant colony (Steps 4-6): m ants per iteration, then a pheromone
-// update, for Nc_max iterations, keeping the best complete route over all iterations.
+// update, for Nc_max iterations, keeping the best complete route over all iterations. Routes
+// rank by their cost L_k (AntRoute::cost; the length on a binary map).
 #pragma once
 
 #include <algorithm>
@@ -24,14 +25,14 @@ enum class UpdateRule {
 
 struct ColonyRun {
   std::vector<std::uint32_t> best_cells;  // grid indices of the best route, S first; empty if none
-  double best_length = std::numeric_limits<double>::infinity();
-  int best_iteration = 0;                 // iteration (1-based) that first found best_length
+  double best_cost = std::numeric_limits<double>::infinity();
+  int best_iteration = 0;                 // iteration (1-based) that first found best_cost
   int iterations_run = 0;
   bool stopped_early = false;             // early_stop_iterations without improvement
   bool interrupted = false;               // should_stop() said so
   std::vector<int> lost_ants_per_iteration;
-  std::vector<double> iteration_best_length;  // +infinity where no ant completed
-  std::vector<double> best_length_so_far;     // +infinity until a route is found
+  std::vector<double> iteration_best_cost;  // +infinity where no ant completed
+  std::vector<double> best_cost_so_far;     // +infinity until a route is found
 };
 
 // Called between iterations with the number of iterations done; returns true to stop.
@@ -106,25 +107,25 @@ class Colony {
         ++lost;
         continue;
       }
-      if (best_ < 0 || route.length < routes_[static_cast<std::size_t>(best_)].length - kTolerance) best_ = k;
-      if (worst_ < 0 || route.length > routes_[static_cast<std::size_t>(worst_)].length + kTolerance) worst_ = k;
+      if (best_ < 0 || route.cost < routes_[static_cast<std::size_t>(best_)].cost - kTolerance) best_ = k;
+      if (worst_ < 0 || route.cost > routes_[static_cast<std::size_t>(worst_)].cost + kTolerance) worst_ = k;
     }
     run.iterations_run = iteration;
     run.lost_ants_per_iteration.push_back(lost);
     bool improved = false;
     if (best_ >= 0) {
       const AntRoute& best = routes_[static_cast<std::size_t>(best_)];
-      run.iteration_best_length.push_back(best.length);
-      if (best.length < run.best_length - kTolerance) {
-        run.best_length = best.length;
+      run.iteration_best_cost.push_back(best.cost);
+      if (best.cost < run.best_cost - kTolerance) {
+        run.best_cost = best.cost;
         run.best_cells = best.cells;
         run.best_iteration = iteration;
         improved = true;
       }
     } else {
-      run.iteration_best_length.push_back(std::numeric_limits<double>::infinity());
+      run.iteration_best_cost.push_back(std::numeric_limits<double>::infinity());
     }
-    run.best_length_so_far.push_back(run.best_length);
+    run.best_cost_so_far.push_back(run.best_cost);
     return improved;
   }
 

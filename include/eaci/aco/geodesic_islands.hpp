@@ -1,6 +1,7 @@
-// Islands that cost no length (beyond the paper): the paper's idea of short legs between
-// waypoints and favourable regions between them, with the waypoints placed on a shortest
-// route instead of near the straight line S-E, and each leg guided by its exact grid distance.
+// Islands that cost nothing (beyond the paper): the paper's idea of short legs between
+// waypoints and favourable regions between them, with the waypoints placed on a cheapest
+// route (a shortest one on a binary map) instead of near the straight line S-E, and each leg
+// guided by its exact cost.
 #pragma once
 
 #include <algorithm>
@@ -9,43 +10,43 @@
 #include <vector>
 
 #include "eaci/aco/islands.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
 
-// The shortest route from `start` down the grid-distance field of the goal
-// (`distance_to_goal`, e.g. distanceField(grid, goal)): each step goes to the neighbour that
-// keeps distance + step length equal to the current distance; ties to the lowest direction.
+// The cheapest route from `start` down the cost field of the goal (`cost_to_goal`,
+// costField(grid, goal)): each step goes to the neighbour that keeps move cost + its cost equal
+// to the current cost; ties to the lowest direction. On a binary map, a shortest route.
 // Empty when the start cannot reach the goal.
-inline CellPath descendDistanceField(const BinaryGrid& grid, const std::vector<double>& distance_to_goal, Cell start) {
+inline CellPath descendCostField(const CostGrid& grid, const std::vector<double>& cost_to_goal, Cell start) {
   CellPath route;
-  if (!grid.isFree(start) || !std::isfinite(distance_to_goal[grid.index(start)])) return route;
+  if (!grid.isFree(start) || !std::isfinite(cost_to_goal[grid.index(start)])) return route;
   route.push_back(start);
   Cell current = start;
-  while (distance_to_goal[grid.index(current)] > 0.0) {
+  while (cost_to_goal[grid.index(current)] > 0.0) {
     int best_dir = -1;
     double best = std::numeric_limits<double>::infinity();
     for (int d = 0; d < kDirections; ++d) {
       if (!grid.canMove(current, d)) continue;
-      const double through = stepLength(d) + distance_to_goal[grid.index(step(current, d))];
+      const double through = grid.moveCost(current, d) + cost_to_goal[grid.index(step(current, d))];
       if (through < best - 1e-9) {
         best = through;
         best_dir = d;
       }
     }
-    current = step(current, best_dir);  // a finite distance always has a descending neighbour
+    current = step(current, best_dir);  // a finite cost always has a descending neighbour
     route.push_back(current);
   }
   return route;
 }
 
-// Islands on the shortest route: after S, the first cell of the route at least r_s
+// Islands on the cheapest route (`shortest_route`, from descendCostField): after S, the first cell of the route at least r_s
 // (Eq. 13) further along it that the auxiliary map leaves free, and so on; E is the last
 // island once it is within r_s along the route. The route through the islands is the
-// shortest route, and consecutive legs never overlap. With `max_spacing` > 0, r_s is capped
+// cheapest route, and consecutive legs never overlap. With `max_spacing` > 0, r_s is capped
 // at that many cells: on large maps long legs would leave the ants' heuristic too flat to
 // guide them (1/d^beta barely differs between neighbours when d is large).
-inline std::vector<Cell> geodesicIslands(const BinaryGrid& auxiliary, const CellPath& shortest_route, Cell start,
+inline std::vector<Cell> geodesicIslands(const CostGrid& auxiliary, const CellPath& shortest_route, Cell start,
                                          Cell goal, int island_count, double max_spacing = 0.0) {
   std::vector<Cell> islands{start};
   if (start == goal || shortest_route.size() < 2) {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "eaci/aco/pheromone_field.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/cell_numbering.hpp"
 
 namespace eaci {
@@ -42,7 +42,7 @@ inline double regionEdgePheromone(const Line& line, Point2 from, Point2 to) {
 // every other edge takes min tau0. An edge in two regions takes the larger value.
 // When no region edge has a finite value (every region a single line of cells), max tau0
 // and min tau0 are taken as 1.
-inline PheromoneField initialIslandPheromone(const BinaryGrid& grid, const std::vector<Cell>& islands,
+inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::vector<Cell>& islands,
                                              double lambda, double alpha) {
   // (edge, value) of every region edge; the regions are small, so this is much smaller than a
   // value per edge of the map.

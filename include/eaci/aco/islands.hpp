@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
 
@@ -30,7 +30,7 @@ inline double islandScore(Cell candidate, Cell start, Cell goal) {
 // - the search stops when E lies inside the circle of the current island (then L_N = E)
 //   or when no candidate is left (E follows directly; the ants then walk that leg).
 // Returns S, the islands, E. The count can exceed N where the straight line is blocked.
-inline std::vector<Cell> paperIslands(const BinaryGrid& auxiliary, const std::vector<std::uint8_t>& reachable,
+inline std::vector<Cell> paperIslands(const CostGrid& auxiliary, const std::vector<std::uint8_t>& reachable,
                                       Cell start, Cell goal, int island_count) {
   constexpr double kTolerance = 1e-9;
   std::vector<Cell> islands{start};

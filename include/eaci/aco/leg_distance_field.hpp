@@ -1,5 +1,6 @@
-// Exact grid distance to the island an ant is heading for, the leg heuristic of the
-// geodesic island strategy (beyond the paper; the paper uses the straight-line distance).
+// Exact cost of the cheapest route to the island an ant is heading for (the grid distance on
+// a binary map), the leg heuristic of the geodesic island strategy (beyond the paper; the paper
+// uses the straight-line distance).
 #pragma once
 
 #include <algorithm>
@@ -7,30 +8,32 @@
 #include <vector>
 
 #include "eaci/aco/islands.hpp"
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/grid_search.hpp"
 
 namespace eaci {
 
-// Grid distance to one island, computed in a window around its leg (the leg's cells plus a
-// margin). Cells the window does not reach read as the Euclidean distance, raised to at least
-// one more than the largest distance inside the window, so they never look better.
+// Route cost to one island, computed in a window around its leg (the leg's cells plus a
+// margin). Cells the window does not reach read as the Euclidean distance (never more than the
+// cost), raised to at least one more than the largest cost inside the window, so they never
+// look better.
 class LegDistanceField {
  public:
   LegDistanceField() = default;
 
-  // `leg` is the part of the shortest route from the previous island to `target`.
-  LegDistanceField(const BinaryGrid& grid, const CellPath& leg, Cell target) : target_(target) {
+  // `leg` is the part of the cheapest route from the previous island to `target`.
+  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target) : target_(target) {
     CellPath extent = leg;
     extent.push_back(target);
     GridSearchRequest request;
-    request.source = target;  // the move rule is symmetric: distances from the island are distances to it
+    request.source = target;
+    request.reverse_costs = true;  // costs of routes to the island
     request.window = CellWindow::around(grid, extent, std::max(4, static_cast<int>(leg.size()) / 2));
     field_ = searchGrid(grid, request);
     outside_ = field_.largest_distance + 1.0;
   }
 
-  // Grid distance (cells) from `c` to the island.
+  // Cost of the cheapest route from `c` to the island (cells on a binary map).
   double at(Cell c) const {
     const double d = field_.at(c);
     return std::isfinite(d) ? d : std::max(euclidean(c, target_), outside_);
@@ -43,7 +46,7 @@ class LegDistanceField {
 };
 
 // One field per island after S (index = the island's index), read by the ant walk.
-inline std::vector<LegDistanceField> legDistanceFields(const BinaryGrid& grid, const CellPath& shortest_route,
+inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, const CellPath& shortest_route,
                                                        const std::vector<Cell>& islands) {
   std::vector<LegDistanceField> fields(islands.size());
   std::size_t from = 0;

@@ -41,6 +41,15 @@ struct Parameters {
   double aco_rho = 0.1;
   double aco_tau0 = 800.0;
   bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
+  // The cost model of every planner (global_planner's): a move into a cell of cost c costs
+  // step_length x (neutral_cost + cost_factor x c) / neutral_cost, and a route's cost, L_k, is
+  // the sum. On a costmap, cells at or above lethal_cost are obstacles and the others have
+  // cost c = their value; unknown cells are free (cost 0) only with allow_unknown. Map files
+  // and OccupancyGrids have free cells of cost 0: a route's cost is its length there.
+  double neutral_cost = 50.0;
+  double cost_factor = 3.0;
+  int lethal_cost = 253;      // costmap_2d INSCRIBED_INFLATED_OBSTACLE
+  bool allow_unknown = false; // the ROS layer defaults to true, as navfn and global_planner do
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
   double island_spacing_max = 6.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
@@ -69,6 +78,12 @@ inline std::string validationError(const Parameters& p) {
   else if (!finite(p.epsilon) || p.epsilon < 0) e << "epsilon must be a number >= 0 (got " << p.epsilon << ")";
   else if (!finite(p.aco_rho) || p.aco_rho <= 0 || p.aco_rho > 1) e << "aco_rho must be in (0, 1] (got " << p.aco_rho << ")";
   else if (!finite(p.aco_tau0) || p.aco_tau0 <= 0) e << "aco_tau0 must be a positive number (got " << p.aco_tau0 << ")";
+  else if (!finite(p.neutral_cost) || p.neutral_cost <= 0 || p.neutral_cost > 1e6)
+    e << "neutral_cost must be a number in (0, 1e6], the cost of a step into a free cell (got " << p.neutral_cost << ")";
+  else if (!finite(p.cost_factor) || p.cost_factor < 0 || p.cost_factor > 1e6)
+    e << "cost_factor must be a number in [0, 1e6], 0 = plan by length only (got " << p.cost_factor << ")";
+  else if (p.lethal_cost < 1 || p.lethal_cost > 255)
+    e << "lethal_cost must be in 1..255, the costmap cost at or above which a cell is an obstacle (got " << p.lethal_cost << ")";
   else if (!finite(p.island_spacing_max) || p.island_spacing_max < 0)
     e << "island_spacing_max must be a number of cells >= 0 (got " << p.island_spacing_max << ")";
   else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
@@ -174,6 +189,15 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"allow_corner_cutting",
        {[](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); },
         [](const Parameters& p) { return ParameterValue{p.allow_corner_cutting}; }}},
+      {"neutral_cost", {[](Parameters& p, const std::string& v) { p.neutral_cost = parseDouble("neutral_cost", v); },
+                        [](const Parameters& p) { return ParameterValue{p.neutral_cost}; }}},
+      {"cost_factor", {[](Parameters& p, const std::string& v) { p.cost_factor = parseDouble("cost_factor", v); },
+                       [](const Parameters& p) { return ParameterValue{p.cost_factor}; }}},
+      {"lethal_cost", {[](Parameters& p, const std::string& v) { p.lethal_cost = parseInt("lethal_cost", v); },
+                       [](const Parameters& p) { return ParameterValue{std::int64_t{p.lethal_cost}}; }}},
+      {"allow_unknown",
+       {[](Parameters& p, const std::string& v) { p.allow_unknown = parseBool("allow_unknown", v); },
+        [](const Parameters& p) { return ParameterValue{p.allow_unknown}; }}},
       {"island_strategy",
        {[](Parameters& p, const std::string& v) {
           if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;

@@ -1,4 +1,4 @@
-// EACI (Section 4) and the classic ACO baseline (Section 3) on a BinaryGrid.
+// EACI (Section 4) and the classic ACO baseline (Section 3) on a CostGrid.
 // Both expect validated parameters and free, mutually reachable, distinct S and E;
 // eaci::plan() checks all of that before it calls them.
 #pragma once
@@ -28,13 +28,13 @@ struct IslandPlan {
 };
 
 // Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
-// kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a shortest route,
-// with exact leg distances.
-inline IslandPlan planIslands(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params) {
-  const BinaryGrid aux = auxiliaryMap(grid, start, goal);
+// kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route,
+// with exact leg costs.
+inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params) {
+  const CostGrid aux = auxiliaryMap(grid, start, goal);
   if (params.island_strategy == IslandStrategy::kPaper)
     return {paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands), {}};
-  const CellPath route = descendDistanceField(grid, distanceField(grid, goal), start);
+  const CellPath route = descendCostField(grid, costField(grid, goal), start);
   IslandPlan plan{geodesicIslands(aux, route, start, goal, params.islands, params.island_spacing_max), {}};
   plan.leg_distance = legDistanceFields(grid, route, plan.islands);
   return plan;
@@ -44,7 +44,7 @@ inline IslandPlan planIslands(const BinaryGrid& grid, Cell start, Cell goal, con
 // leg with the turning-aware heuristic, adaptive update. `should_stop` is also asked between
 // the set-up steps (which take a fifth of a second on an 800 x 800 map); stopped there, the
 // result has no route and an empty pheromone field.
-inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
   ColonyResult result;
   const auto stopped_in_setup = [&] {
@@ -65,7 +65,7 @@ inline ColonyResult solveEaci(const BinaryGrid& grid, Cell start, Cell goal, con
 }
 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
-inline ColonyResult solveClassicAco(const BinaryGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
                                     const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
   ColonyResult result;
   result.waypoints = {start, goal};

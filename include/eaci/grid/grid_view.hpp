@@ -2,7 +2,7 @@
 //
 // The view can sit on a costmap_2d char map, on the int8 data of a
 // nav_msgs/OccupancyGrid or on a map loaded by eaci::io without copying.
-// How a byte value maps to free / obstacle is the CellInterpretation's job.
+// How a byte value maps to obstacle / cost is the CellInterpretation's job.
 #pragma once
 
 #include <cstddef>
@@ -14,20 +14,31 @@ namespace eaci {
 
 enum class UnknownPolicy { kObstacle, kFree };
 
-// Byte value -> traversability. A value equal to `unknown_value` is unknown;
-// any other value at or above `obstacle_threshold` is an obstacle.
-//   plain 0/1 maps:        threshold 1,   unknown never occurs
-//   nav_msgs/OccupancyGrid: threshold 65,  unknown 255 (= int8 -1)
-//   costmap_2d:            threshold 253, unknown 255 (NO_INFORMATION)
+// Byte value -> obstacle or cost: the one interpreter of map bytes, whatever their source.
+// A value equal to `unknown_value` is unknown: an obstacle, or a free cell of cost 0 when
+// unknown cells are allowed; any other value at or above `lethal_cost` is an obstacle; every
+// other cell is free, with its value as its cost when the values are graded (costmap_2d: 0 free
+// .. 252 inscribed, the inflation gradient), else with cost 0.
+//   plain 0/1 maps:         lethal 1,   unknown never occurs,      not graded
+//   map files, OccupancyGrid: lethal 100 / 65, unknown 255 (= int8 -1), not graded
+//   costmap_2d:             lethal 253, unknown 255 (NO_INFORMATION), graded
 struct CellInterpretation {
-  std::uint8_t obstacle_threshold = 1;
+  std::uint8_t lethal_cost = 1;
   std::uint8_t unknown_value = 255;
   UnknownPolicy unknown = UnknownPolicy::kObstacle;
+  bool graded = false;
+
+  // costmap_2d's char map with its own lethal cost (253 = inscribed inflated obstacle).
+  static CellInterpretation costmap(std::uint8_t lethal_cost, bool allow_unknown) {
+    return {lethal_cost, 255, allow_unknown ? UnknownPolicy::kFree : UnknownPolicy::kObstacle, true};
+  }
 
   bool isObstacle(std::uint8_t value) const {
     if (value == unknown_value) return unknown == UnknownPolicy::kObstacle;
-    return value >= obstacle_threshold;
+    return value >= lethal_cost;
   }
+  // The cost 0..254 of a cell that is not an obstacle.
+  std::uint8_t cost(std::uint8_t value) const { return graded && value != unknown_value ? value : 0; }
 };
 
 // Which buffer row holds the top row of the map. Images and the paper's
@@ -60,6 +71,8 @@ class GridView {
   }
 
   bool isObstacle(Cell c) const { return interpretation_.isObstacle(value(c)); }
+  // The cost 0..254 of a free cell (see CellInterpretation).
+  std::uint8_t cost(Cell c) const { return interpretation_.cost(value(c)); }
   bool isFree(Cell c) const { return contains(c) && !isObstacle(c); }
 
  private:

@@ -5,13 +5,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/grid_search.hpp"
 
 namespace eaci {
 
 // Flag per cell (index order of the grid): 1 if reachable from `from`.
-inline std::vector<std::uint8_t> reachableFrom(const BinaryGrid& grid, Cell from) {
+inline std::vector<std::uint8_t> reachableFrom(const CostGrid& grid, Cell from) {
   GridSearchRequest request;
   request.source = from;
   request.order = SearchOrder::kAnyOrder;

@@ -29,7 +29,7 @@ struct OccupancyMap {
 
   GridView view(UnknownPolicy unknown = UnknownPolicy::kObstacle) const {
     CellInterpretation interpretation;
-    interpretation.obstacle_threshold = kOccupiedValue;
+    interpretation.lethal_cost = kOccupiedValue;
     interpretation.unknown_value = kUnknownValue;
     interpretation.unknown = unknown;
     return GridView(cells.data(), width, height, RowOrder::kTopFirst, interpretation);

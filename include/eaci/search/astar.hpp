@@ -1,24 +1,26 @@
-// Exact shortest paths on the same grid and move rule as the ants: A* and a Dijkstra distance
-// field, both the one grid search (grid_search.hpp).
+// Exact cheapest routes on the same grid, move rule and move costs as the ants: A* and a
+// Dijkstra cost field, both the one grid search (grid_search.hpp). A* is the reference for a
+// route's cost; on a binary map the cost is the length.
 #pragma once
 
 #include <limits>
 #include <vector>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/grid_search.hpp"
 
 namespace eaci {
 
 struct ShortestPath {
   bool found = false;
-  double length = std::numeric_limits<double>::infinity();  // cells
+  double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost)
+  double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
   CellPath path;                                            // start first, goal last
 };
 
-// A* from start to goal. Returns found = false when the goal is unreachable or either
+// A* from start to goal: a cheapest route (on a binary map, a shortest one). Returns found = false when the goal is unreachable or either
 // cell is off the map or blocked.
-inline ShortestPath shortestPath(const BinaryGrid& grid, Cell start, Cell goal) {
+inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal) {
   ShortestPath result;
   if (!grid.isFree(start) || !grid.isFree(goal)) return result;
   GridSearchRequest request;
@@ -28,17 +30,20 @@ inline ShortestPath shortestPath(const BinaryGrid& grid, Cell start, Cell goal) 
   const GridSearchResult search = searchGrid(grid, request);
   if (!search.reached(goal)) return result;
   result.found = true;
-  result.length = search.at(goal);
+  result.cost = search.at(goal);
   result.path = search.routeTo(goal);
+  result.length = 0.0;
+  for (std::size_t k = 1; k < result.path.size(); ++k)
+    result.length += stepLength(directionBetween(result.path[k - 1], result.path[k]));
   return result;
 }
 
-// Dijkstra: grid distance (cells) from `source` to every cell (index order of the grid),
-// +infinity where unreachable. The move rule is symmetric, so this is also the distance from
-// every cell to `source`.
-inline std::vector<double> distanceField(const BinaryGrid& grid, Cell source) {
+// Dijkstra: the cost of a cheapest route from every cell (index order of the grid) to
+// `target`, +infinity where unreachable; on a binary map, the grid distance (cells).
+inline std::vector<double> costField(const CostGrid& grid, Cell target) {
   GridSearchRequest request;
-  request.source = source;
+  request.source = target;
+  request.reverse_costs = true;
   return searchGrid(grid, request).distance;
 }
 

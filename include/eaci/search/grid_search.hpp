@@ -1,8 +1,11 @@
 // One search over the grid's moves, behind every exact search of the project: A*
-// (shortestPath), the Dijkstra distance field (distanceField), the island leg fields
+// (shortestPath), the Dijkstra cost field (costField), the island leg fields
 // (LegDistanceField) and reachability (reachableFrom). What differs between them is a
 // parameter: a target to stop at (and steer towards), a window to stay in, whether to keep
 // the moves for the route back, and whether distances matter at all.
+//
+// A route's cost is the sum of its moves' costs (CostGrid::moveCost); the "distance" a search
+// finds is that cost, which on a binary map (every free cell of cost 0) is the grid distance.
 #pragma once
 
 #include <algorithm>
@@ -15,12 +18,13 @@
 #include <queue>
 #include <vector>
 
-#include "eaci/grid/binary_grid.hpp"
+#include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
 
 // Octile distance: the length of the shortest 8-connected path on an empty grid, a
-// consistent A* heuristic under both corner rules.
+// consistent A* heuristic under both corner rules. No move costs less than its length (the
+// cheapest cell, cost 0, weighs a move by exactly 1), so it stays consistent for route costs.
 inline double octileDistance(Cell a, Cell b) {
   const int dr = std::abs(a.row - b.row), dc = std::abs(a.col - b.col);
   return (kSqrt2 - 1.0) * std::min(dr, dc) + std::max(dr, dc);
@@ -30,9 +34,9 @@ inline double octileDistance(Cell a, Cell b) {
 struct CellWindow {
   int row0 = 0, col0 = 0, rows = 0, cols = 0;
 
-  static CellWindow whole(const BinaryGrid& grid) { return {0, 0, grid.height(), grid.width()}; }
+  static CellWindow whole(const CostGrid& grid) { return {0, 0, grid.height(), grid.width()}; }
   // The bounding box of `cells` grown by `margin`, clipped to the grid.
-  static CellWindow around(const BinaryGrid& grid, const CellPath& cells, int margin) {
+  static CellWindow around(const CostGrid& grid, const CellPath& cells, int margin) {
     int r0 = cells.front().row, r1 = r0, c0 = cells.front().col, c1 = c0;
     for (const Cell& c : cells) {
       r0 = std::min(r0, c.row);
@@ -57,7 +61,7 @@ struct CellWindow {
 };
 
 enum class SearchOrder {
-  kByDistance,  // Dijkstra / A*: cells settle in order of grid distance (exact distances)
+  kByDistance,  // Dijkstra / A*: cells settle in order of route cost (exact costs)
   kAnyOrder,    // a flood: which cells are reachable, nothing more (distance 0 on each)
 };
 
@@ -67,11 +71,12 @@ struct GridSearchRequest {
   std::optional<CellWindow> window;  // default: the whole grid
   bool keep_moves = false;     // remember the move into each cell, for routeTo()
   SearchOrder order = SearchOrder::kByDistance;
+  bool reverse_costs = false;  // costs of routes *to* the source (see searchGrid)
 };
 
 struct GridSearchResult {
   CellWindow window;
-  std::vector<double> distance;        // per window slot, from the source; +infinity = not reached
+  std::vector<double> distance;        // per window slot: route cost from the source; +infinity = not reached
   std::vector<std::uint8_t> came_dir;  // per window slot (keep_moves): the move into it, kNoMove at the source
   double largest_distance = 0.0;       // over the settled cells
   static constexpr std::uint8_t kNoMove = 0xFF;
@@ -110,9 +115,11 @@ struct SearchEntry {
 };
 }  // namespace detail
 
-// The search itself. A blocked or off-window source reaches nothing. The move rule is
-// symmetric, so distances from the source are also distances to it.
-inline GridSearchResult searchGrid(const BinaryGrid& grid, const GridSearchRequest& request) {
+// The search itself. A blocked or off-window source reaches nothing. A move costs by the cell
+// it enters, so costs from the source are not costs to it on a cost map (they are on a binary
+// map): a field that must hold costs *to* its source searches the reversed moves
+// (`reverse_costs`), which charge the cell a move leaves instead.
+inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest& request) {
   GridSearchResult result;
   result.window = request.window.value_or(CellWindow::whole(grid));
   const CellWindow& window = result.window;
@@ -160,7 +167,8 @@ inline GridSearchResult searchGrid(const BinaryGrid& grid, const GridSearchReque
       const Cell next = step(here, d);
       if (!window.contains(next)) continue;
       const auto j = static_cast<std::uint32_t>(window.slot(next));
-      const double g = top.cost + stepLength(d);
+      const double g = top.cost + (request.reverse_costs ? grid.moveCostInto(grid.index(here), d)
+                                                         : grid.moveCost(here, d));
       if (g >= result.distance[j]) continue;
       result.distance[j] = g;
       if (request.keep_moves) result.came_dir[j] = static_cast<std::uint8_t>(d);

@@ -1,0 +1,122 @@
+// The grid the planners search: per cell an obstacle or a cost 0..254, the move rule, and
+// the cost of a move.
+//
+// Built once per plan from a GridView (the only copy a plan makes of the map: one byte per
+// cell, next to eight pheromone values per cell).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "eaci/grid/cell.hpp"
+#include "eaci/grid/grid_view.hpp"
+#include "eaci/grid/moves.hpp"
+
+namespace eaci {
+
+// What a cell's cost c adds to a move into it, as in global_planner: the move costs
+// step_length x (neutral_cost + cost_factor x c) / neutral_cost. With c = 0 a move costs its
+// length, so on a binary map a route's cost is its length.
+struct CostRule {
+  double neutral_cost = 50.0;
+  double cost_factor = 3.0;
+};
+
+class CostGrid {
+ public:
+  static constexpr std::uint8_t kObstacle = 255;  // the cell byte of an obstacle; others are costs
+
+  CostGrid() = default;
+  CostGrid(int width, int height, bool allow_corner_cutting, CostRule rule = {})
+      : width_(width), height_(height), allow_corner_cutting_(allow_corner_cutting),
+        cells_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {
+    setCostRule(rule);
+  }
+
+  static CostGrid fromView(const GridView& view, bool allow_corner_cutting, CostRule rule = {}) {
+    CostGrid grid(view.width(), view.height(), allow_corner_cutting, rule);
+    for (int r = 0; r < view.height(); ++r) {
+      for (int c = 0; c < view.width(); ++c) {
+        const Cell cell{r, c};
+        if (view.isObstacle(cell)) grid.setBlocked(cell, true);
+        else grid.setCost(cell, view.cost(cell));
+      }
+    }
+    return grid;
+  }
+
+  // Rows of 0 (free) / 1 (obstacle), first row = top. Handy for tests and small maps.
+  static CostGrid fromRows(const std::vector<std::vector<int>>& rows, bool allow_corner_cutting) {
+    const int h = static_cast<int>(rows.size());
+    const int w = h > 0 ? static_cast<int>(rows[0].size()) : 0;
+    CostGrid grid(w, h, allow_corner_cutting);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w && c < static_cast<int>(rows[r].size()); ++c) grid.setBlocked(Cell{r, c}, rows[r][c] != 0);
+    return grid;
+  }
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t cellCount() const { return cells_.size(); }
+  bool allowCornerCutting() const { return allow_corner_cutting_; }
+  const CostRule& costRule() const { return rule_; }
+
+  std::size_t index(Cell c) const {
+    return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.col);
+  }
+  Cell cellAt(std::size_t index) const {
+    return Cell{static_cast<int>(index / static_cast<std::size_t>(width_)),
+                static_cast<int>(index % static_cast<std::size_t>(width_))};
+  }
+
+  bool contains(Cell c) const { return c.row >= 0 && c.col >= 0 && c.row < height_ && c.col < width_; }
+  bool isBlocked(Cell c) const { return cells_[index(c)] == kObstacle; }
+  bool isFree(Cell c) const { return contains(c) && cells_[index(c)] != kObstacle; }
+  void setBlocked(Cell c, bool blocked) { cells_[index(c)] = blocked ? kObstacle : 0; }
+  // The cost 0..254 of a free cell.
+  std::uint8_t cost(Cell c) const { return cells_[index(c)]; }
+  void setCost(Cell c, std::uint8_t cost) { cells_[index(c)] = cost < kObstacle ? cost : kObstacle - 1; }
+  void setCostRule(CostRule rule) {
+    rule_ = rule;
+    cell_factor_[0] = 1.0;  // exactly: a move into a cell of cost 0 costs its length
+    for (std::size_t c = 1; c < cell_factor_.size(); ++c)
+      cell_factor_[c] = (rule.neutral_cost + rule.cost_factor * static_cast<double>(c)) / rule.neutral_cost;
+  }
+
+  // The move rule: the target must be free; a diagonal move that would pass
+  // between two cells sharing the corner also needs both of them free unless
+  // corner cutting is allowed (the paper's benchmark rule).
+  bool canMove(Cell from, int dir) const {
+    const Cell to = step(from, dir);
+    if (!isFree(to)) return false;
+    if (!isDiagonal(dir) || allow_corner_cutting_) return true;
+    return isFree(Cell{from.row + kDirRow[dir], from.col}) && isFree(Cell{from.row, from.col + kDirCol[dir]});
+  }
+
+  // The cost of an allowed move from `from` in direction `dir`: its length, weighted by the
+  // cost of the cell it enters (CostRule). Never less than the move's length.
+  double moveCost(Cell from, int dir) const { return moveCostInto(index(step(from, dir)), dir); }
+  // The same for the move in direction `dir` that enters the cell of grid index `to_index`.
+  double moveCostInto(std::size_t to_index, int dir) const { return stepLength(dir) * cell_factor_[cells_[to_index]]; }
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  bool allow_corner_cutting_ = false;
+  std::vector<std::uint8_t> cells_;  // cost 0..254, or kObstacle
+  CostRule rule_{};
+  std::array<double, kObstacle> cell_factor_{};  // (neutral + factor x c) / neutral by cost c
+};
+
+// A route's cost: the sum of its moves' costs (0 for a single cell). Consecutive cells must be
+// 8-neighbours.
+inline double routeCost(const CostGrid& grid, const CellPath& route) {
+  double cost = 0.0;
+  for (std::size_t k = 1; k < route.size(); ++k)
+    cost += grid.moveCost(route[k - 1], directionBetween(route[k - 1], route[k]));
+  return cost;
+}
+
+}  // namespace eaci
