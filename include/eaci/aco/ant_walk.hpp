@@ -136,12 +136,15 @@ struct WalkSetup {
 
   // d_jg + sigma, the quantity Eq. 9 (sigma = 0) and Eq. 16-17 invert, for the move in
   // direction `dir` from cell `from` (grid index `from_index`).
+  // With leg costs (geodesic islands) d_jg also counts what entering j costs beyond the move's
+  // length, so that the ant sees the cost of the cell it steps on: d_jg + sigma is then the
+  // cost of the cheapest route through j, less the move's length. On a binary map that excess
+  // is 0 and d_jg is the leg distance.
   double heuristicDistance(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
-    const double distance =
-        distance_table.empty()
-            ? distanceToWaypoint(step(from, dir), target)
-            : distance_table[target][static_cast<std::size_t>(static_cast<std::ptrdiff_t>(from_index) + index_step[dir])];
+    const auto next = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(from_index) + index_step[dir]);
+    double distance = distance_table.empty() ? distanceToWaypoint(step(from, dir), target) : distance_table[target][next];
+    if (!leg_distance.empty()) distance += grid->moveCostInto(next, dir) - stepLength(dir);
     return distance + sigma;
   }
 
