@@ -157,6 +157,7 @@ TEST_F(CliTest, AStarReproducesPaperOptima) {
     ASSERT_TRUE(j.value("success", false));
     EXPECT_EQ(j["algorithm"], "astar");
     EXPECT_NEAR(j["length"].get<double>(), c.length, 1e-3);
+    EXPECT_EQ(j["cost"].get<double>(), j["length"].get<double>());  // no costs on a map file: cost = length
     EXPECT_NEAR(j["length_m"].get<double>(), c.length, 1e-3);  // resolution 1
     EXPECT_NEAR(recomputedLength(j["path"]), c.length, 1e-3);
     EXPECT_NE(r.out.find("astar"), std::string::npos) << r.out;
@@ -300,6 +301,30 @@ TEST_F(CliTest, ParamsFileThenSetThenSeed) {
   EXPECT_EQ(j["parameters"]["ants"], 5);  // the last --set wins
   EXPECT_EQ(j["parameters"]["max_iterations"], 4);
   EXPECT_EQ(j["seed"], 12);
+}
+
+TEST_F(CliTest, CostModelParametersAndUnknownCellsAreParameters) {
+  const std::string map = paperMap("paper-20x20.txt");
+  requireMap(map);
+  const std::string common = "--map " + quote(map) + " --start 0,0 --goal 19,19 --algorithm astar";
+  CliRun r;
+  json j = runJson(common + " --set cost_factor=1.5 --set neutral_cost=20 --set lethal_cost=200", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["parameters"]["cost_factor"], 1.5);
+  EXPECT_EQ(j["parameters"]["neutral_cost"], 20.0);
+  EXPECT_EQ(j["parameters"]["lethal_cost"], 200);
+  EXPECT_EQ(j["parameters"]["allow_unknown"], false);
+  EXPECT_EQ(j["unknown"], "obstacle");
+  j = runJson(common + " --unknown free", &r);  // --unknown is allow_unknown
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["parameters"]["allow_unknown"], true);
+  EXPECT_EQ(j["unknown"], "free");
+  j = runJson(common + " --set allow_unknown=true", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["unknown"], "free");
+  runJson(common + " --set cost_factor=-1", &r);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cost_factor must be a number in [0, 1e6]"), std::string::npos) << r.err;
 }
 
 TEST_F(CliTest, BadInputExitsTwoWithOneLine) {

@@ -76,7 +76,7 @@ struct Options {
   std::vector<std::string> sets;
   std::string json_file;
   std::string png_file;
-  std::string unknown = "obstacle";
+  std::string unknown;  // free | obstacle: --set allow_unknown=true | false
   bool quiet = false;
 };
 
@@ -89,7 +89,7 @@ void applyParameterFile(eaci::Parameters& p, const std::string& file) {
   }
 }
 
-// Paper defaults, then --params, then each --set in order, then --seed; validated.
+// Paper defaults, then --params, then each --set in order, then --unknown and --seed; validated.
 void buildParameters(const Options& o, eaci::Parameters& p) {
   if (!o.params_file.empty()) applyParameterFile(p, o.params_file);
   for (const std::string& assignment : o.sets) {
@@ -105,6 +105,7 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
       throw InputError(std::string("--set ") + assignment + ": " + e.what());
     }
   }
+  if (!o.unknown.empty()) p.allow_unknown = o.unknown == "free";
   if (!o.seed.empty()) {
     try {
       eaci::setParameter(p, "seed", o.seed);
@@ -295,7 +296,8 @@ int run(int argc, char** argv) {
   app.add_option("--params", o.params_file, "flat YAML mapping of parameter names to values");
   app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
       ->allow_extra_args(false);
-  app.add_option("--unknown", o.unknown, "how unknown map cells count: free or obstacle")
+  app.add_option("--unknown", o.unknown,
+                 "how unknown map cells count: free or obstacle (= --set allow_unknown=true|false; default obstacle)")
       ->check(CLI::IsMember({"free", "obstacle"}));
   app.add_option("--json", o.json_file, "write a JSON report here (also on failure)");
   app.add_option("--png", o.png_file, "write a PNG picture of the map, pheromone, islands and path here");
@@ -316,12 +318,12 @@ int run(int argc, char** argv) {
 
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
   eaci::parseAlgorithm(o.algorithm, algorithm);
-  const eaci::UnknownPolicy unknown = o.unknown == "free" ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+  eaci::UnknownPolicy unknown = eaci::UnknownPolicy::kObstacle;  // params.allow_unknown, once read
 
   std::optional<eaci::OccupancyMap> map;
   eaci::tools::PlanContext context;
   context.map_path = o.map_path;
-  context.unknown_policy = o.unknown;
+  context.unknown_policy = "obstacle";
   eaci::Parameters params{};
 
   // Any failure before plan(): report it in the JSON (as far as known) and exit 2.
@@ -343,6 +345,8 @@ int run(int argc, char** argv) {
     if (starts != 1) throw InputError("give the start once: --start ROW,COL, --start-cell N or --start-xy X,Y");
     if (goals != 1) throw InputError("give the goal once: --goal ROW,COL, --goal-cell N or --goal-xy X,Y");
     buildParameters(o, params);
+    unknown = params.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+    context.unknown_policy = params.allow_unknown ? "free" : "obstacle";
     map = eaci::loadMap(o.map_path);
     context.map = &*map;
     context.start = resolveEndpoint(*map, o.start_rc, o.start_cell, o.start_xy, "start");

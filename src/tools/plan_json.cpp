@@ -61,6 +61,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
 
   const bool has_length = r.success() && std::isfinite(r.length);
   j["length"] = has_length ? json(r.length) : json(nullptr);
+  // The route's cost (the cost model of the parameters); the length on a map without costs.
+  j["cost"] = has_length && std::isfinite(r.cost) ? json(r.cost) : json(nullptr);
   j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
 
   json path = json::array(), path_xy = json::array();
