@@ -82,10 +82,10 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     map_frame.resolution = costmap->getResolution();
     map_frame.width = static_cast<int>(costmap->getSizeInCellsX());
     map_frame.height = static_cast<int>(costmap->getSizeInCellsY());
-    eaci::CellInterpretation costs;
-    costs.obstacle_threshold = static_cast<std::uint8_t>(options_.obstacle_cost);
+    // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
+    eaci::CellInterpretation costs =
+        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params_.lethal_cost), params_.allow_unknown);
     costs.unknown_value = costmap_2d::NO_INFORMATION;
-    costs.unknown = options_.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
     result = eaci_ros::planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());

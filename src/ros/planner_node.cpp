@@ -122,7 +122,7 @@ class PlannerNode {
       return true;
     }
     const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
-    const GridPlan plan = planOnGrid(viewOf(map_, options_.occupied_threshold, options_.allow_unknown), frameOf(map_),
+    const GridPlan plan = planOnGrid(viewOf(map_, options_.occupied_threshold, params_.allow_unknown), frameOf(map_),
                                      start, goal, tolerance, params_, options_, cancellation_.flag());
     if (!plan.ok) {
       ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());

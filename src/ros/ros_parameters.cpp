@@ -41,6 +41,9 @@ T readScalar(const ros::NodeHandle& nh, const std::string& name, T fallback) {
 }  // namespace
 
 void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlannerOptions& options) {
+  params.allow_unknown = true;  // the ROS default, as navfn and global_planner
+  if (nh.hasParam("obstacle_cost") && !nh.hasParam("lethal_cost"))
+    params.lethal_cost = readScalar<int>(nh, "obstacle_cost", params.lethal_cost);
   for (const std::string& name : eaci::parameterNames()) {
     if (!nh.hasParam(name)) continue;
     XmlRpc::XmlRpcValue value;
@@ -58,8 +61,6 @@ void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlan
   if (!eaci::parseAlgorithm(algorithm, options.algorithm))
     throw eaci::ParameterError(nh.resolveName("algorithm") + " must be eaci, aco or astar (got '" + algorithm + "')");
   options.default_tolerance = readScalar<double>(nh, "default_tolerance", options.default_tolerance);
-  options.allow_unknown = readScalar<bool>(nh, "allow_unknown", options.allow_unknown);
-  options.obstacle_cost = readScalar<int>(nh, "obstacle_cost", options.obstacle_cost);
   options.occupied_threshold = readScalar<int>(nh, "occupied_threshold", options.occupied_threshold);
   options.publish_plan = readScalar<bool>(nh, "publish_plan", options.publish_plan);
   options.max_planning_time = readScalar<double>(nh, "max_planning_time", options.max_planning_time);
@@ -68,8 +69,6 @@ void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlan
 
   if (!std::isfinite(options.default_tolerance) || options.default_tolerance < 0)
     throw eaci::ParameterError(nh.resolveName("default_tolerance") + " must be a distance >= 0");
-  if (options.obstacle_cost < 1 || options.obstacle_cost > 255)
-    throw eaci::ParameterError(nh.resolveName("obstacle_cost") + " must be in 1..255");
   if (options.occupied_threshold < 1 || options.occupied_threshold > 100)
     throw eaci::ParameterError(nh.resolveName("occupied_threshold") + " must be in 1..100");
   if (!std::isfinite(options.robot_radius) || options.robot_radius < 0)

@@ -14,8 +14,6 @@ namespace eaci_ros {
 struct RosPlannerOptions {
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | astar
   double default_tolerance = 0.0;   // m: a goal in an obstacle moves to the nearest free cell within it
-  bool allow_unknown = true;        // plan through unknown cells (as navfn and global_planner do)
-  int obstacle_cost = 253;          // costmap cost at or above which a cell is an obstacle (253 = inscribed)
   int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
   bool publish_plan = true;
   double max_planning_time = 5.0;   // s; the best route so far is returned when it runs out; 0 = no limit
@@ -23,9 +21,11 @@ struct RosPlannerOptions {
   double robot_radius = 0.0;        // m, planner node only: obstacles grow by it (the plugin has the costmap's inflation)
 };
 
-// Fills `params` and `options` from `nh` (a private namespace). Throws eaci::ParameterError with a
-// sentence naming the parameter for a wrong type or value. Corner cutting is always forbidden
-// on a robot, whatever the parameter server says.
+// Fills `params` and `options` from `nh` (a private namespace). The cost model (neutral_cost,
+// cost_factor, lethal_cost, allow_unknown) is in `params`; allow_unknown defaults to true here,
+// as in navfn and global_planner, and the older name obstacle_cost still sets lethal_cost.
+// Throws eaci::ParameterError with a sentence naming the parameter for a wrong type or value.
+// Corner cutting is always forbidden on a robot, whatever the parameter server says.
 void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlannerOptions& options);
 
 }  // namespace eaci_ros
