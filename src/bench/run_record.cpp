@@ -2,21 +2,17 @@
 
 #include <cmath>
 
+#include "common/json_number.hpp"
+
 namespace eaci_bench {
 
 namespace {
 
-// JSON has no infinity: write null, read null back as +infinity.
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+using eaci::report::finiteOrNull;
 
+// Non-finite numbers are written as null (finiteOrNull); null is read back as +infinity.
 double numberFrom(const nlohmann::json& j) {
   return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
-}
-
-nlohmann::json numbers(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
-  for (double v : values) out.push_back(number(v));
-  return out;
 }
 
 std::vector<double> numbersFrom(const nlohmann::json& j) {
@@ -43,7 +39,7 @@ nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path) {
   nlohmann::json j = {
       {"seed", run.seed},
       {"success", run.success},
-      {"length", number(run.length)},
+      {"length", finiteOrNull(run.length)},
       {"total_turn_deg", run.total_turn_deg},
       {"iterations_to_converge", run.iterations_to_converge},
       {"iterations_run", run.iterations_run},
@@ -56,8 +52,8 @@ nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path) {
       {"first_iteration_ms", run.first_iteration_ms},
   };
   if (with_curves) {
-    j["best_length_so_far"] = numbers(run.best_length_so_far);
-    j["iteration_best_length"] = numbers(run.iteration_best_length);
+    j["best_length_so_far"] = finiteOrNull(run.best_length_so_far);
+    j["iteration_best_length"] = finiteOrNull(run.iteration_best_length);
     j["lost_ants_per_iteration"] = run.lost_ants_per_iteration;
     j["iteration_end_ms"] = run.iteration_end_ms;
   }

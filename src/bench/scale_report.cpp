@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/json_number.hpp"
 #include "parameters_json.hpp"
 #include "report_format.hpp"
 
@@ -136,7 +137,7 @@ std::string notesList(const std::vector<ScaleCase>& cases) {
 nlohmann::json runJson(const ScaleRun& run) {
   nlohmann::json j = toJson(run.record, false, false);
   j["optimum"] = run.optimum;
-  j["gap_pct"] = std::isfinite(run.gap_pct) ? nlohmann::json(run.gap_pct) : nlohmann::json(nullptr);
+  j["gap_pct"] = eaci::report::finiteOrNull(run.gap_pct);
   j["peak_rss_mb"] = run.peak_rss_mb;
   j["plan_rss_mb"] = run.plan_rss_mb;
   return j;
@@ -145,15 +146,14 @@ nlohmann::json runJson(const ScaleRun& run) {
 nlohmann::json variantJson(const ScaleVariantResult& v) {
   nlohmann::json runs = nlohmann::json::array();
   for (const ScaleRun& run : v.runs) runs.push_back(runJson(run));
-  auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   return {{"key", v.variant.key},
           {"label", v.variant.label},
           {"algorithm", eaci::toString(v.variant.algorithm)},
           {"threads", v.variant.threads},
           {"early_stop_iterations", v.variant.early_stop_iterations},
           {"summary", toJson(v.summary)},
-          {"avg_gap_pct", number(v.avg_gap_pct)},
-          {"max_gap_pct", number(v.max_gap_pct)},
+          {"avg_gap_pct", eaci::report::finiteOrNull(v.avg_gap_pct)},
+          {"max_gap_pct", eaci::report::finiteOrNull(v.max_gap_pct)},
           {"max_peak_rss_mb", v.max_peak_rss_mb},
           {"max_plan_rss_mb", v.max_plan_rss_mb},
           {"skipped_seeds", v.skipped_seeds},

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "common/json_number.hpp"
+
 namespace eaci_bench {
 
 namespace {
@@ -102,7 +104,7 @@ Summary summarize(const std::vector<RunRecord>& runs, double optimum) {
 }
 
 nlohmann::json toJson(const Summary& s) {
-  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  using eaci::report::finiteOrNull;
   return {
       {"runs", s.runs},
       {"successes", s.successes},
@@ -110,9 +112,9 @@ nlohmann::json toJson(const Summary& s) {
       {"optimal_runs", s.optimal_runs},
       {"interrupted_runs", s.interrupted_runs},
       {"stopped_early_runs", s.stopped_early_runs},
-      {"avg_length", number(s.avg_length)},
-      {"best_length", number(s.best_length)},
-      {"worst_length", number(s.worst_length)},
+      {"avg_length", finiteOrNull(s.avg_length)},
+      {"best_length", finiteOrNull(s.best_length)},
+      {"worst_length", finiteOrNull(s.worst_length)},
       {"std_length", s.std_length},
       {"avg_iterations", s.avg_iterations},
       {"avg_iterations_run", s.avg_iterations_run},
@@ -123,9 +125,9 @@ nlohmann::json toJson(const Summary& s) {
       {"median_cpu_ms", s.median_cpu_ms},
       {"avg_time_to_best_ms", s.avg_time_to_best_ms},
       {"median_time_to_best_ms", s.median_time_to_best_ms},
-      {"avg_gap_pct", number(s.avg_gap_pct)},
-      {"best_gap_pct", number(s.best_gap_pct)},
-      {"worst_gap_pct", number(s.worst_gap_pct)},
+      {"avg_gap_pct", finiteOrNull(s.avg_gap_pct)},
+      {"best_gap_pct", finiteOrNull(s.best_gap_pct)},
+      {"worst_gap_pct", finiteOrNull(s.worst_gap_pct)},
       {"best_run_index", s.best_run},
       {"median_run_index", s.median_run},
   };

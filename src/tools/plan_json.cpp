@@ -9,22 +9,17 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/json_number.hpp"
+
 namespace eaci::tools {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+using report::finiteOrNull;
 
 json cellJson(Cell c) { return json::array({c.row, c.col}); }
 
 json optionalCellJson(const std::optional<Cell>& c) { return c ? cellJson(*c) : json(nullptr); }
-
-json lengthsJson(const std::vector<double>& lengths) {
-  json out = json::array();
-  for (double v : lengths) out.push_back(finiteOrNull(v));
-  return out;
-}
 
 const char* statusName(PlanStatus s) {
   switch (s) {
@@ -80,15 +75,15 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["interrupted"] = r.interrupted;
   j["lost_ants_total"] = r.lost_ants_total;
   j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
-  j["best_length_per_iteration"] = lengthsJson(r.iteration_best_length);
-  j["best_length_so_far"] = lengthsJson(r.best_length_so_far);
+  j["best_length_per_iteration"] = finiteOrNull(r.iteration_best_length);
+  j["best_length_so_far"] = finiteOrNull(r.best_length_so_far);
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
   json islands = json::array();
   for (const Cell& c : r.islands) islands.push_back(cellJson(c));
   j["islands"] = std::move(islands);
 
-  j["time_ms"] = context.time_ms ? finiteOrNull(*context.time_ms) : json(nullptr);
+  j["time_ms"] = context.time_ms ? json(finiteOrNull(*context.time_ms)) : json(nullptr);
   j["seed"] = context.parameters.seed;
 
   json m;
