@@ -3,7 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "parameters_json.hpp"
+#include "common/parameters_json.hpp"
+#include "grid_rows.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -180,7 +181,7 @@ nlohmann::json paperJson(const std::vector<MapResult>& results, const PaperOptio
            {{"runs", options.runs},
             {"threads", options.threads},
             {"snapshot_iterations", options.snapshot_iterations},
-            {"parameters", toJson(paperParameters(paperVariants().front(), 1, options.threads))}}},
+            {"parameters", eaci::report::parametersToJson(paperParameters(paperVariants().front(), 1, options.threads))}}},
           {"maps", maps}};
 }
 

@@ -5,7 +5,8 @@
 #include <sstream>
 
 #include "common/json_number.hpp"
-#include "parameters_json.hpp"
+#include "common/parameters_json.hpp"
+#include "grid_rows.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -254,7 +255,7 @@ nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions
             {"budget_s", options.budget_s},
             {"slow_run_s", options.slow_run_s},
             {"early_stop_iterations", options.early_stop_iterations},
-            {"parameters", toJson(eaci::Parameters{})}}},
+            {"parameters", eaci::report::parametersToJson(eaci::Parameters{})}}},
           {"cases", out_cases},
           {"examples", examples}};
 }

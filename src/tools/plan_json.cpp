@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/json_number.hpp"
+#include "common/parameters_json.hpp"
 
 namespace eaci::tools {
 namespace {
@@ -31,20 +32,6 @@ const char* statusName(PlanStatus s) {
 }
 
 }  // namespace
-
-json parametersToJson(const Parameters& p) {
-  json out = json::object();
-  for (const auto& [name, value] : parameterValues(p)) {
-    out[name] = std::visit(
-        [](const auto& v) -> json {
-          using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, double>) return finiteOrNull(v);
-          else return json(v);
-        },
-        value);
-  }
-  return out;
-}
 
 json planToJson(const PlanResult& r, const PlanContext& context) {
   const OccupancyMap* map = context.map;
@@ -112,7 +99,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   } else {
     j["goal_xy"] = nullptr;
   }
-  j["parameters"] = parametersToJson(context.parameters);
+  j["parameters"] = report::parametersToJson(context.parameters);
   return j;
 }
 
