@@ -17,12 +17,6 @@ nlohmann::json compactRuns(const std::vector<RunRecord>& runs) {
   return out;
 }
 
-std::string valueText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 const SweepPoint* findPoint(const std::vector<SweepPoint>& points, const std::string& axis, double value,
                             const std::string& map, const std::string& strategy) {
   for (const SweepPoint& p : points)
@@ -40,7 +34,7 @@ std::string axisTable(const std::vector<SweepPoint>& points, const SweepAxis& ax
       header.push_back(strategy + ": " + column);
   MarkdownTable table(header);
   for (double value : axis.values) {
-    std::vector<std::string> row = {valueText(value)};
+    std::vector<std::string> row = {parameterText(value)};
     for (const std::string& strategy : strategies) {
       const SweepPoint* p = findPoint(points, axis.key, value, map, strategy);
       if (p == nullptr) {
@@ -67,7 +61,7 @@ std::string rhoDetailTable(const std::vector<const RhoPoint*>& points) {
   MarkdownTable table({"map", "ρ", "iterations", "paper", "ours ÷ paper", "lost ants", "paper", "ours ÷ paper",
                        "avg length", "best length", "success", "within 2× on both"});
   for (const RhoPoint* p : points)
-    table.addRow({p->map, valueText(p->rho), fixed(p->summary.avg_iterations, 2), fixed(p->paper.avg_iterations, 1),
+    table.addRow({p->map, parameterText(p->rho), fixed(p->summary.avg_iterations, 2), fixed(p->paper.avg_iterations, 1),
                   ratio(p->summary.avg_iterations, p->paper.avg_iterations), fixed(p->summary.avg_lost_ants, 1),
                   fixed(p->paper.avg_lost_ants, 1), ratio(p->summary.avg_lost_ants, p->paper.avg_lost_ants),
                   fixed(p->summary.avg_length, 3), fixed(p->summary.best_length, 3),
@@ -91,7 +85,7 @@ std::string rhoGridTable(const std::vector<RhoPoint>& rho, double tau0) {
   header.push_back("all maps within 2×");
   MarkdownTable table(header);
   for (double value : acoRhoValues()) {
-    std::vector<std::string> row = {valueText(value)};
+    std::vector<std::string> row = {parameterText(value)};
     bool all = true;
     for (const std::string& map : maps) {
       const RhoPoint* found = nullptr;
@@ -137,7 +131,7 @@ std::string rhoVerdict(const std::vector<RhoPoint>& rho) {
   for (const auto& [tau0, value] : passing)
     defaults_pass = defaults_pass || (tau0 == defaults.aco_tau0 && value == defaults.aco_rho);
   std::ostringstream s;
-  s << "Our defaults (τ0 = " << valueText(defaults.aco_tau0) << ", ρ = " << valueText(defaults.aco_rho) << ") "
+  s << "Our defaults (τ0 = " << parameterText(defaults.aco_tau0) << ", ρ = " << parameterText(defaults.aco_rho) << ") "
     << (defaults_pass ? "bring classic ACO within a factor 2 of the paper's ACO iterations and lost ants on every map."
                       : "**do not bring classic ACO within a factor 2 of the paper's ACO iterations and lost ants on "
                         "every map.**")
@@ -146,7 +140,7 @@ std::string rhoVerdict(const std::vector<RhoPoint>& rho) {
     << "\n\nSettings within a factor 2 on every map:";
   if (passing.empty()) s << " none.";
   for (std::size_t k = 0; k < passing.size(); ++k)
-    s << (k ? "," : "") << " τ0 = " << valueText(passing[k].first) << " with ρ = " << valueText(passing[k].second);
+    s << (k ? "," : "") << " τ0 = " << parameterText(passing[k].first) << " with ρ = " << parameterText(passing[k].second);
   s << "\n";
   return s.str();
 }
@@ -231,13 +225,13 @@ std::string sweepMarkdown(const std::vector<SweepPoint>& eaci, const std::vector
        "Q = 100, corner cutting allowed, seeds 1–"
     << options.runs << "; *paper*: the paper's ACO row; *within 2×*: both iterations and lost ants within a "
        "factor 2 of the paper's.\n\n"
-    << "### τ0 = " << valueText(eaci::Parameters{}.aco_tau0) << " (our default; our default ρ is "
-    << valueText(eaci::Parameters{}.aco_rho) << ")\n\n"
+    << "### τ0 = " << parameterText(eaci::Parameters{}.aco_tau0) << " (our default; our default ρ is "
+    << parameterText(eaci::Parameters{}.aco_rho) << ")\n\n"
     << rhoDetailTable(withTau0(rho, eaci::Parameters{}.aco_tau0)) << "\n"
     << "### Every τ0: average iterations (ours ÷ paper) / average lost ants (ours ÷ paper)\n\n"
     << "Only τ0 relative to Q / L matters (the roulette wheel of Eq. 8 does not change when every τ is "
        "scaled): τ0 = 800 with Q = 100 equals the common MATLAB ACO code's τ0 = 8 with Q = 1.\n\n";
-  for (double tau0 : acoTau0Values()) s << "τ0 = " << valueText(tau0) << ":\n\n" << rhoGridTable(rho, tau0) << "\n";
+  for (double tau0 : acoTau0Values()) s << "τ0 = " << parameterText(tau0) << ":\n\n" << rhoGridTable(rho, tau0) << "\n";
   s << rhoVerdict(rho);
   return s.str();
 }

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "eaci/aco/parameters.hpp"
+#include "eaci/io/text.hpp"
 #include "paper_tables.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
@@ -23,13 +23,6 @@ std::vector<double> steps(double first, double last, double step) {
     values.push_back(v);
   }
   return values;
-}
-
-// Text that setParameter reads back exactly ("6" for an integer key, "0.3").
-std::string parameterText(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
 }
 
 // The paper's tuning parameters (N = 6), corner cutting allowed, EACI with `strategy` islands.
@@ -118,6 +111,8 @@ std::vector<RhoPoint> runRhoSweep(const SweepOptions& options, Progress& progres
 }
 
 }  // namespace
+
+std::string parameterText(double value) { return eaci::formatNumber(value, 6); }
 
 const std::vector<SweepAxis>& eaciSweepAxes() {
   static const std::vector<SweepAxis> axes = {

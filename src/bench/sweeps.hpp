@@ -52,6 +52,9 @@ struct RhoPoint {
   bool within_factor_2 = false;   // both ratios in [0.5, 2]
 };
 
+// A swept value as setParameter reads it and the tables show it: "6" for an integer key, "0.3".
+std::string parameterText(double value);
+
 const std::vector<SweepAxis>& eaciSweepAxes();
 const std::vector<double>& acoRhoValues();
 // tau0 matters as tau0 * L / Q, the size of the initial pheromone against one ant's deposit;
