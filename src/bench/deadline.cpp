@@ -96,7 +96,7 @@ nlohmann::json toJson(const DeadlineOptions& options, const Provenance& provenan
   for (const DeadlineRun& r : runs)
     rows.push_back({{"kind", toString(r.kind)}, {"size", r.size}, {"seed", r.seed}, {"limit_ms", r.limit_ms},
                     {"optimum", r.optimum}, {"overshoot_pct", overshootPct(r)}, {"run", eaci_bench::toJson(r.record, false, false)}});
-  return {{"provenance", eaci_bench::toJson(provenance)}, {"threads", options.threads}, {"runs", rows}};
+  return {{"provenance", provenance}, {"threads", options.threads}, {"runs", rows}};
 }
 
 std::string csv(const std::vector<DeadlineRun>& runs) {

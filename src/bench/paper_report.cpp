@@ -26,13 +26,13 @@ nlohmann::json variantJson(const VariantResult& v) {
           {"label", v.variant.label},
           {"island_strategy", v.variant.island_strategy},
           {"settings", settings},
-          {"summary", toJson(v.summary)},
+          {"summary", v.summary},
           {"runs", runs},
           {"pheromone_snapshots_seed", 1},
           {"pheromone_snapshots", snapshotsJson(v.snapshots)}};
 }
 
-nlohmann::json optionalRow(const std::optional<PaperRow>& row) { return row ? toJson(*row) : nlohmann::json(nullptr); }
+nlohmann::json optionalRow(const std::optional<PaperRow>& row) { return row ? nlohmann::json(*row) : nlohmann::json(nullptr); }
 
 nlohmann::json mapJson(const MapResult& m) {
   nlohmann::json variants = nlohmann::json::array();
@@ -43,8 +43,8 @@ nlohmann::json mapJson(const MapResult& m) {
           {"source", m.spec.note},
           {"width", m.map.width},
           {"height", m.map.height},
-          {"start", {m.start.row, m.start.col}},
-          {"goal", {m.goal.row, m.goal.col}},
+          {"start", m.start},
+          {"goal", m.goal},
           {"start_serial", m.spec.start_serial},
           {"goal_serial", m.spec.goal_serial},
           {"grid", gridRows(m.map)},
@@ -176,7 +176,7 @@ nlohmann::json paperJson(const std::vector<MapResult>& results, const PaperOptio
   nlohmann::json maps = nlohmann::json::array();
   for (const MapResult& m : results) maps.push_back(mapJson(m));
   return {{"kind", "paper"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"runs", options.runs},
             {"threads", options.threads},

@@ -80,7 +80,7 @@ Provenance collectProvenance(const std::string& command_line) {
   if (p.git_commit.empty()) p.git_commit = "unknown";
   std::istringstream modified(runCommand(git + "status --porcelain -- include src/io 2>/dev/null"));
   for (std::string line; std::getline(modified, line);)
-    if (line.size() > 3) p.modified_sources.push_back(line.substr(3));
+    if (line.size() > 3) p.modified_solver_sources.push_back(line.substr(3));
   p.compiler = compilerName();
 #ifdef NDEBUG
   p.build_type = "optimised (NDEBUG)";
@@ -91,30 +91,21 @@ Provenance collectProvenance(const std::string& command_line) {
   p.hardware_threads = std::thread::hardware_concurrency();
   p.memory_gb = memoryGb();
   p.date_utc = utcNow();
-  p.load_average = loadAverage();
+  p.load_average_at_start = loadAverage();
   p.command_line = command_line;
   return p;
-}
-
-nlohmann::json toJson(const Provenance& p) {
-  return {{"git_commit", p.git_commit},         {"modified_solver_sources", p.modified_sources},
-          {"compiler", p.compiler},             {"build_type", p.build_type},
-          {"cpu_model", p.cpu_model},           {"hardware_threads", p.hardware_threads},
-          {"memory_gb", p.memory_gb},           {"date_utc", p.date_utc},
-          {"load_average_at_start", p.load_average},
-          {"command_line", p.command_line}};
 }
 
 std::string provenanceMarkdown(const Provenance& p) {
   std::ostringstream s;
   s << "Source `" << p.git_commit << "`";
-  if (!p.modified_sources.empty()) {
+  if (!p.modified_solver_sources.empty()) {
     s << " with uncommitted changes to";
-    for (const std::string& f : p.modified_sources) s << " `" << f << "`";
+    for (const std::string& f : p.modified_solver_sources) s << " `" << f << "`";
   }
   s << "; " << p.compiler << ", " << p.build_type << "; " << p.cpu_model << ", " << p.hardware_threads
     << " hardware threads, " << static_cast<int>(p.memory_gb + 0.5) << " GB; " << p.date_utc
-    << "; load average " << p.load_average << " when the run began.\n\n"
+    << "; load average " << p.load_average_at_start << " when the run began.\n\n"
     << "Command: `" << p.command_line << "`\n";
   return s.str();
 }

@@ -152,25 +152,13 @@ nlohmann::json variantJson(const ScaleVariantResult& v) {
           {"algorithm", eaci::toString(v.variant.algorithm)},
           {"threads", v.variant.threads},
           {"early_stop_iterations", v.variant.early_stop_iterations},
-          {"summary", toJson(v.summary)},
+          {"summary", v.summary},
           {"avg_gap_pct", eaci::report::finiteOrNull(v.avg_gap_pct)},
           {"max_gap_pct", eaci::report::finiteOrNull(v.max_gap_pct)},
           {"max_peak_rss_mb", v.max_peak_rss_mb},
           {"max_plan_rss_mb", v.max_plan_rss_mb},
           {"skipped_seeds", v.skipped_seeds},
           {"runs", runs}};
-}
-
-nlohmann::json earlyStopJson(const EarlyStopComparison& e) {
-  return {{"seeds", e.seeds},
-          {"full_ms", e.full_ms},
-          {"early_ms", e.early_ms},
-          {"astar_ms", e.astar_ms},
-          {"time_saved_pct", e.time_saved_pct},
-          {"length_cost_pct", e.length_cost_pct},
-          {"early_gap_pct", e.early_gap_pct},
-          {"early_iterations", e.early_iterations},
-          {"first_iteration_ms", e.first_iteration_ms}};
 }
 
 nlohmann::json caseJson(const ScaleCase& c) {
@@ -184,8 +172,8 @@ nlohmann::json caseJson(const ScaleCase& c) {
           {"kind", toString(c.kind)},
           {"maps", maps},
           {"variants", variants},
-          {"early_stop", earlyStopJson(compareEarlyStop(c, "eaci-1t", "eaci-early-1t"))},
-          {"early_stop_all_cores", earlyStopJson(compareEarlyStop(c, "eaci-all", "eaci-early-all"))},
+          {"early_stop", compareEarlyStop(c, "eaci-1t", "eaci-early-1t")},
+          {"early_stop_all_cores", compareEarlyStop(c, "eaci-all", "eaci-early-all")},
           {"notes", c.notes}};
 }
 
@@ -195,10 +183,10 @@ nlohmann::json exampleJson(const ScaleCase& c) {
   nlohmann::json routes = nlohmann::json::object();
   for (const ScaleVariantResult& v : c.variants) {
     const ScaleRun* run = runWithSeed(&v, 1);
-    if (run != nullptr && !run->record.path.empty()) routes[v.variant.key] = cellsToJson(run->record.path);
+    if (run != nullptr && !run->record.path.empty()) routes[v.variant.key] = run->record.path;
   }
   return {{"size", c.size},      {"kind", toString(c.kind)},      {"seed", g.seed_used},
-          {"grid", gridRows(g.map)}, {"start", {g.start.row, g.start.col}}, {"goal", {g.goal.row, g.goal.col}},
+          {"grid", gridRows(g.map)}, {"start", g.start}, {"goal", g.goal},
           {"optimum", g.optimum}, {"routes", routes}};
 }
 
@@ -247,7 +235,7 @@ nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions
   std::vector<std::string> kinds;
   for (MapKind k : options.kinds) kinds.push_back(toString(k));
   return {{"kind", "scale"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"sizes", options.sizes},
             {"kinds", kinds},

@@ -159,14 +159,14 @@ nlohmann::json sweepJson(const std::vector<SweepPoint>& eaci, const std::vector<
   nlohmann::json points = nlohmann::json::array();
   for (const SweepPoint& p : eaci)
     points.push_back({{"parameter", p.axis}, {"value", p.value}, {"map", p.map}, {"strategy", p.strategy},
-                      {"summary", toJson(p.summary)}, {"runs", compactRuns(p.runs)}});
+                      {"summary", p.summary}, {"runs", compactRuns(p.runs)}});
   nlohmann::json rho_points = nlohmann::json::array();
   for (const RhoPoint& p : rho)
-    rho_points.push_back({{"map", p.map}, {"rho", p.rho}, {"tau0", p.tau0}, {"summary", toJson(p.summary)}, {"paper_aco", toJson(p.paper)},
+    rho_points.push_back({{"map", p.map}, {"rho", p.rho}, {"tau0", p.tau0}, {"summary", p.summary}, {"paper_aco", p.paper},
                           {"iterations_ratio", p.iterations_ratio}, {"lost_ants_ratio", p.lost_ants_ratio},
                           {"within_factor_2", p.within_factor_2}, {"runs", compactRuns(p.runs)}});
   return {{"kind", "sweep"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"runs", options.runs},
             {"threads", options.threads},

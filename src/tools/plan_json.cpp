@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/cell_json.hpp"
 #include "common/json_number.hpp"
 #include "common/parameters_json.hpp"
 
@@ -18,9 +19,7 @@ namespace {
 using json = nlohmann::ordered_json;
 using report::finiteOrNull;
 
-json cellJson(Cell c) { return json::array({c.row, c.col}); }
-
-json optionalCellJson(const std::optional<Cell>& c) { return c ? cellJson(*c) : json(nullptr); }
+json optionalCellJson(const std::optional<Cell>& c) { return c ? json(*c) : json(nullptr); }
 
 const char* statusName(PlanStatus s) {
   switch (s) {
@@ -47,7 +46,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
 
   json path = json::array(), path_xy = json::array();
   for (const Cell& c : r.path) {
-    path.push_back(cellJson(c));
+    path.push_back(c);
     if (map) {
       const Point2 p = map->worldAtCell(c);
       path_xy.push_back(json::array({p.x, p.y}));
@@ -66,9 +65,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["best_length_so_far"] = finiteOrNull(r.best_length_so_far);
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
-  json islands = json::array();
-  for (const Cell& c : r.islands) islands.push_back(cellJson(c));
-  j["islands"] = std::move(islands);
+  j["islands"] = r.islands;
 
   j["time_ms"] = context.time_ms ? json(finiteOrNull(*context.time_ms)) : json(nullptr);
   j["seed"] = context.parameters.seed;
