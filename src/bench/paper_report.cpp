@@ -5,6 +5,7 @@
 
 #include "common/parameters_json.hpp"
 #include "grid_rows.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -61,13 +62,19 @@ std::string paperRowLabel(const Variant& v) { return v.algorithm == eaci::Algori
 
 // ---------------------------------------------------------------- Markdown
 
+// The parameters of a paper variant (seed and threads do not matter here).
+eaci::Parameters variantParameters(const std::string& key) { return paperParameters(paperVariant(key), 1, 1); }
+
 std::string settingsParagraph(const PaperOptions& options) {
+  const eaci::Parameters aco = variantParameters("aco");
   std::ostringstream s;
-  s << "Corner cutting allowed (the paper's move rule); the paper's comparison parameters m = 50, "
-       "Nc_max = 100, α = 1.1, β = 7, Q = 100, κ = 0.9, λ = 3, N = 9, ε = 0.5; classic ACO with "
-       "τ0 = 800 and ρ = 0.1 (our defaults; the paper gives neither: weak deposits, as in the common "
-       "MATLAB ACO code's τ0 = 8 with Q = 1, chosen by `eaci_bench sweep`), and with τ0 = 1, ρ = 0.3 "
-       "(strong deposits, for contrast); seeds 1–"
+  s << "Corner cutting allowed (the paper's move rule); the paper's comparison parameters "
+    << symbolValues(aco, {"ants", "max_iterations", "alpha", "beta", "q", "kappa", "lambda", "islands", "epsilon"})
+    << "; classic ACO with " << symbolValues(aco, {"aco_tau0"}) << " and " << symbolValues(aco, {"aco_rho"})
+    << " (our defaults; the paper gives neither: weak deposits, as in the common MATLAB ACO code's τ0 = 8 with "
+       "Q = 1, chosen by `eaci_bench sweep`), and with "
+    << symbolValues(variantParameters("aco-strong"), {"aco_tau0", "aco_rho"})
+    << " (strong deposits, for contrast); seeds 1–"
     << options.runs << "; " << options.threads
     << " thread(s) per plan. *iterations*: the iteration that first reached the run's final length "
        "(the paper's \"average iterative times\"); *lost ants*: total over the run; *std*: sample "
@@ -129,8 +136,9 @@ const VariantResult* findVariant(const MapResult& m, const std::string& key) {
 }
 
 std::string ratioTable(const std::vector<MapResult>& results) {
-  MarkdownTable table({"map", "ACO iterations", "ACO lost ants", "ACO τ0 1 ρ 0.3 iterations",
-                       "ACO τ0 1 ρ 0.3 lost ants", "EACI-paper iterations", "EACI-paper lost ants",
+  const std::string strong = "ACO " + symbolValues(variantParameters("aco-strong"), {"aco_tau0", "aco_rho"}, " ", " ");
+  MarkdownTable table({"map", "ACO iterations", "ACO lost ants", strong + " iterations",
+                       strong + " lost ants", "EACI-paper iterations", "EACI-paper lost ants",
                        "EACI-paper best length", "EACI-paper angle", "EACI-geodesic optimal",
                        "EACI-geodesic iterations", "EACI-geodesic lost ants"});
   for (const MapResult& m : results) {

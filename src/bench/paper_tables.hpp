@@ -34,6 +34,7 @@ struct Variant {
 };
 
 const std::vector<Variant>& paperVariants();
+const Variant& paperVariant(const std::string& key);  // throws std::invalid_argument
 
 struct VariantResult {
   Variant variant;

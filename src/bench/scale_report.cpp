@@ -7,6 +7,7 @@
 #include "common/json_number.hpp"
 #include "common/parameters_json.hpp"
 #include "grid_rows.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -123,7 +124,8 @@ std::string earlyStopTable(const std::vector<ScaleCase>& cases, int early_stop_i
   s << "One thread; early stop after " << early_stop_iterations
     << " iterations without improvement; wall times are means over the seeds; *length cost*: "
        "early-stopped route over the full run's route, same seed; *set-up + 1st iteration*: wall time "
-       "until the first iteration ended (islands, distance fields, initial pheromone, 50 ants).\n\n"
+       "until the first iteration ended (islands, distance fields, initial pheromone, "
+    << eaci::Parameters{}.ants << " ants).\n\n"
     << table.render();
   return s.str();
 }
@@ -275,8 +277,10 @@ std::string scaleMarkdown(const std::vector<ScaleCase>& cases, const ScaleOption
     << provenanceMarkdown(provenance) << "\n"
     << "Rooms (rooms 10–20 cells, 1-cell walls, a 2–3-cell door into each neighbour) and clutter "
        "(rectangular blocks over 20–30 % of the map) maps, start at the top-left corner, goal at the "
-       "bottom-right; corner cutting forbidden; default parameters (geodesic islands, m = 50, "
-       "Nc_max = 100). Each plan runs in its own child process. Colony runs stop after "
+       "bottom-right; corner cutting forbidden; default parameters ("
+    << eaci::toString(eaci::Parameters{}.island_strategy) << " islands, "
+    << symbolValues(eaci::Parameters{}, {"ants", "max_iterations"})
+    << "). Each plan runs in its own child process. Colony runs stop after "
     << options.budget_s << " s (marked *capped*); a planner whose run takes over " << options.slow_run_s
     << " s runs for the first seed only (marked *1 run*).\n\n"
     << "### Time per plan (ms of wall time, median over the seeds)\n\n"

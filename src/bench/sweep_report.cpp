@@ -5,6 +5,7 @@
 
 #include "eaci/aco/parameters.hpp"
 #include "paper_maps.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -28,7 +29,7 @@ std::string optimalText(const Summary& s) { return std::to_string(s.optimal_runs
 
 std::string axisTable(const std::vector<SweepPoint>& points, const SweepAxis& axis, const std::string& map,
                       const std::vector<std::string>& strategies) {
-  std::vector<std::string> header = {axis.symbol};
+  std::vector<std::string> header = {paperSymbol(axis.key)};
   for (const std::string& strategy : strategies)
     for (const char* column : {"length", "iterations", "lost ants", "optimal"})
       header.push_back(strategy + ": " + column);
@@ -153,7 +154,7 @@ nlohmann::json sweepJson(const std::vector<SweepPoint>& eaci, const std::vector<
   for (const SweepAxis& axis : eaciSweepAxes()) {
     nlohmann::json base = nlohmann::json::object();
     for (const auto& [key, text] : axis.base) base[key] = text;
-    axes.push_back({{"parameter", axis.key}, {"symbol", axis.symbol}, {"figure", axis.figure},
+    axes.push_back({{"parameter", axis.key}, {"symbol", paperSymbol(axis.key)}, {"figure", axis.figure},
                     {"values", axis.values}, {"base", base}});
   }
   nlohmann::json points = nlohmann::json::array();
@@ -172,7 +173,9 @@ nlohmann::json sweepJson(const std::vector<SweepPoint>& eaci, const std::vector<
             {"threads", options.threads},
             {"eaci_maps", options.eaci_maps},
             {"strategies", options.strategies},
-            {"tuning_base", {{"islands", 6}, {"allow_corner_cutting", true}}}}},
+            {"tuning_base",
+             {{"islands", paperTuningParameters().islands},
+              {"allow_corner_cutting", paperTuningParameters().allow_corner_cutting}}}}},
           {"eaci_axes", axes},
           {"eaci_points", points},
           {"aco_rho_values", acoRhoValues()},
@@ -211,18 +214,20 @@ std::string sweepMarkdown(const std::vector<SweepPoint>& eaci, const std::vector
   std::ostringstream s;
   s << "## Parameter sweeps (the paper's Figs 11–14)\n\n"
     << provenanceMarkdown(provenance) << "\n"
-    << "EACI, corner cutting allowed, the paper's tuning parameters (m = 50, Nc_max = 100, α = 1.1, β = 7, "
-       "Q = 100, κ = 0.9, λ = 3, ε = 0.5, N = 6), one parameter varied at a time, seeds 1–"
+    << "EACI, corner cutting allowed, the paper's tuning parameters ("
+    << symbolValues(paperTuningParameters(),
+                    {"ants", "max_iterations", "alpha", "beta", "q", "kappa", "lambda", "epsilon", "islands"})
+    << "), one parameter varied at a time, seeds 1–"
     << options.runs
     << " per value. *length*: average route length; *iterations*: average iterations to converge; "
        "*lost ants*: average lost ants per run; *optimal*: runs that returned the A* optimum.\n\n";
   for (const SweepAxis& axis : eaciSweepAxes())
     for (const std::string& map : options.eaci_maps)
-      s << "### " << axis.symbol << " (`" << axis.key << "`, the paper's " << axis.figure << ") on " << map << "\n\n"
+      s << "### " << paperSymbol(axis.key) << " (`" << axis.key << "`, the paper's " << axis.figure << ") on " << map << "\n\n"
         << axisTable(eaci, axis, map, options.strategies) << "\n";
   s << "## Classic ACO: the evaporation rate ρ (and the initial pheromone τ0)\n\n"
     << "The paper gives no ρ and no τ0 for its ACO baseline. Classic ACO with the paper's m, Nc_max, α, β, "
-       "Q = 100, corner cutting allowed, seeds 1–"
+    << symbolValues(eaci::Parameters{}, {"q"}) << ", corner cutting allowed, seeds 1–"
     << options.runs << "; *paper*: the paper's ACO row; *within 2×*: both iterations and lost ants within a "
        "factor 2 of the paper's.\n\n"
     << "### τ0 = " << parameterText(eaci::Parameters{}.aco_tau0) << " (our default; our default ρ is "
