@@ -16,7 +16,7 @@ namespace {
 // Strong deposits (tau0 = 1, rho = 0.3, our defaults before 2026-11-22): the contrast. Its
 // label names the settings.
 Variant strongAco() {
-  Variant v{"aco-strong", "", eaci::Algorithm::kAco, "", {{"aco_tau0", "1"}, {"aco_rho", "0.3"}}};
+  Variant v{VariantKey::kAcoStrong, "", eaci::Algorithm::kAco, "", {{"aco_tau0", "1"}, {"aco_rho", "0.3"}}};
   v.label = "classic ACO, " + symbolValues(paperParameters(v, 1, 1), {"aco_tau0", "aco_rho"});
   return v;
 }
@@ -25,7 +25,7 @@ VariantResult runVariant(const MapResult& m, const Variant& variant, const Paper
                          Progress& progress) {
   VariantResult result;
   result.variant = variant;
-  const std::string stage = m.spec.name + " | " + variant.key;
+  const std::string stage = m.spec.name + " | " + toString(variant.key);
   for (int k = 1; k <= options.runs; ++k) {
     progress.show(stage, k, options.runs);
     const eaci::Parameters params = paperParameters(variant, static_cast<std::uint64_t>(k), options.threads);
@@ -65,18 +65,18 @@ const std::vector<Variant>& paperVariants() {
   static const std::vector<Variant> variants = {
       // Our defaults tau0 = 800, rho = 0.1: weak deposits against the initial pheromone, like the
       // common MATLAB ACO code (tau0 = 8, Q = 1); `eaci_bench sweep` shows why.
-      {"aco", "classic ACO", eaci::Algorithm::kAco, "", {}},
+      {VariantKey::kAco, "classic ACO", eaci::Algorithm::kAco, "", {}},
       strongAco(),
-      {"eaci-paper", "EACI, paper islands", eaci::Algorithm::kEaci, "paper", {}},
-      {"eaci-geodesic", "EACI, geodesic islands", eaci::Algorithm::kEaci, "geodesic", {}},
+      {VariantKey::kEaciPaper, "EACI, paper islands", eaci::Algorithm::kEaci, "paper", {}},
+      {VariantKey::kEaciGeodesic, "EACI, geodesic islands", eaci::Algorithm::kEaci, "geodesic", {}},
   };
   return variants;
 }
 
-const Variant& paperVariant(const std::string& key) {
+const Variant& paperVariant(VariantKey key) {
   for (const Variant& v : paperVariants())
     if (v.key == key) return v;
-  throw std::invalid_argument("unknown paper variant '" + key + "'");
+  throw std::invalid_argument(std::string("no paper variant '") + toString(key) + "'");
 }
 
 eaci::Parameters paperParameters(const Variant& variant, std::uint64_t seed, int threads) {

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-const ScaleVariantResult* findVariant(const ScaleCase& c, const std::string& key) {
+const ScaleVariantResult* findVariant(const ScaleCase& c, VariantKey key) {
   for (const ScaleVariantResult& v : c.variants)
     if (v.variant.key == key) return &v;
   return nullptr;
@@ -44,7 +44,7 @@ double avgOptimum(const ScaleCase& c) {
 }
 
 // "12.3" or "—" when the variant did not run; "*" marks fewer runs than seeds.
-std::string timeCell(const ScaleCase& c, const std::string& key) {
+std::string timeCell(const ScaleCase& c, VariantKey key) {
   const ScaleVariantResult* v = findVariant(c, key);
   if (v == nullptr || v->runs.empty()) return "—";
   std::string text = fixed(v->summary.median_time_ms, v->summary.median_time_ms < 10 ? 2 : 0);
@@ -53,7 +53,7 @@ std::string timeCell(const ScaleCase& c, const std::string& key) {
   return text;
 }
 
-std::string memoryCell(const ScaleCase& c, const std::string& key) {
+std::string memoryCell(const ScaleCase& c, VariantKey key) {
   const ScaleVariantResult* v = findVariant(c, key);
   if (v == nullptr || v->runs.empty()) return "—";
   return fixed(v->max_peak_rss_mb, 1) + " (" + fixed(v->max_plan_rss_mb, 1) + ")";
@@ -81,9 +81,9 @@ std::string timeTable(const std::vector<ScaleCase>& cases) {
                        "EACI early stop, 1 thread", "EACI early stop, all cores", "ACO 1 thread", "ACO all cores"});
   for (const ScaleCase& c : cases)
     table.addRow({caseName(c), std::to_string(c.maps.size()), fixed(avgObstacleFraction(c) * 100, 0) + " %",
-                  fixed(avgOptimum(c), 1), timeCell(c, "astar"), timeCell(c, "eaci-1t"), timeCell(c, "eaci-all"),
-                  timeCell(c, "eaci-early-1t"), timeCell(c, "eaci-early-all"), timeCell(c, "aco-1t"),
-                  timeCell(c, "aco-all")});
+                  fixed(avgOptimum(c), 1), timeCell(c, VariantKey::kAStar), timeCell(c, VariantKey::kEaci1t), timeCell(c, VariantKey::kEaciAll),
+                  timeCell(c, VariantKey::kEaciEarly1t), timeCell(c, VariantKey::kEaciEarlyAll), timeCell(c, VariantKey::kAco1t),
+                  timeCell(c, VariantKey::kAcoAll)});
   return table.render();
 }
 
@@ -91,8 +91,8 @@ std::string memoryTable(const std::vector<ScaleCase>& cases) {
   MarkdownTable table({"map", "A*", "EACI 1 thread", "EACI all cores", "EACI early stop, 1 thread", "ACO 1 thread",
                        "ACO all cores"});
   for (const ScaleCase& c : cases)
-    table.addRow({caseName(c), memoryCell(c, "astar"), memoryCell(c, "eaci-1t"), memoryCell(c, "eaci-all"),
-                  memoryCell(c, "eaci-early-1t"), memoryCell(c, "aco-1t"), memoryCell(c, "aco-all")});
+    table.addRow({caseName(c), memoryCell(c, VariantKey::kAStar), memoryCell(c, VariantKey::kEaci1t), memoryCell(c, VariantKey::kEaciAll),
+                  memoryCell(c, VariantKey::kEaciEarly1t), memoryCell(c, VariantKey::kAco1t), memoryCell(c, VariantKey::kAcoAll)});
   return table.render();
 }
 
@@ -100,8 +100,8 @@ std::string qualityTable(const std::vector<ScaleCase>& cases) {
   MarkdownTable table({"map", "EACI success", "EACI gap avg / max %", "EACI iterations", "EACI lost ants",
                        "ACO success", "ACO gap avg / max %", "ACO iterations", "ACO lost ants"});
   for (const ScaleCase& c : cases) {
-    const ScaleVariantResult* e = findVariant(c, "eaci-1t");
-    const ScaleVariantResult* a = findVariant(c, "aco-1t");
+    const ScaleVariantResult* e = findVariant(c, VariantKey::kEaci1t);
+    const ScaleVariantResult* a = findVariant(c, VariantKey::kAco1t);
     table.addRow({caseName(c), successCell(e), gapCell(e), numberCell(e, &Summary::avg_iterations, 1),
                   numberCell(e, &Summary::avg_lost_ants, 1), successCell(a), gapCell(a),
                   numberCell(a, &Summary::avg_iterations, 1), numberCell(a, &Summary::avg_lost_ants, 0)});
@@ -113,7 +113,7 @@ std::string earlyStopTable(const std::vector<ScaleCase>& cases, int early_stop_i
   MarkdownTable table({"map", "A* ms", "EACI full ms", "EACI early-stop ms", "time saved", "length cost",
                        "early-stop gap to A*", "iterations run", "early stop ÷ A*", "set-up + 1st iteration ms"});
   for (const ScaleCase& c : cases) {
-    const EarlyStopComparison e = compareEarlyStop(c, "eaci-1t", "eaci-early-1t");
+    const EarlyStopComparison e = compareEarlyStop(c, VariantKey::kEaci1t, VariantKey::kEaciEarly1t);
     if (e.seeds == 0) continue;
     table.addRow({caseName(c), fixed(e.astar_ms, 2), fixed(e.full_ms, 1), fixed(e.early_ms, 1),
                   fixed(e.time_saved_pct, 0) + " %", fixed(e.length_cost_pct, 2) + " %",
@@ -149,7 +149,7 @@ nlohmann::json runJson(const ScaleRun& run) {
 nlohmann::json variantJson(const ScaleVariantResult& v) {
   nlohmann::json runs = nlohmann::json::array();
   for (const ScaleRun& run : v.runs) runs.push_back(runJson(run));
-  return {{"key", v.variant.key},
+  return {{"key", toString(v.variant.key)},
           {"label", v.variant.label},
           {"algorithm", eaci::toString(v.variant.algorithm)},
           {"threads", v.variant.threads},
@@ -174,8 +174,8 @@ nlohmann::json caseJson(const ScaleCase& c) {
           {"kind", toString(c.kind)},
           {"maps", maps},
           {"variants", variants},
-          {"early_stop", compareEarlyStop(c, "eaci-1t", "eaci-early-1t")},
-          {"early_stop_all_cores", compareEarlyStop(c, "eaci-all", "eaci-early-all")},
+          {"early_stop", compareEarlyStop(c, VariantKey::kEaci1t, VariantKey::kEaciEarly1t)},
+          {"early_stop_all_cores", compareEarlyStop(c, VariantKey::kEaciAll, VariantKey::kEaciEarlyAll)},
           {"notes", c.notes}};
 }
 
@@ -185,7 +185,7 @@ nlohmann::json exampleJson(const ScaleCase& c) {
   nlohmann::json routes = nlohmann::json::object();
   for (const ScaleVariantResult& v : c.variants) {
     const ScaleRun* run = runWithSeed(&v, 1);
-    if (run != nullptr && !run->record.path.empty()) routes[v.variant.key] = run->record.path;
+    if (run != nullptr && !run->record.path.empty()) routes[toString(v.variant.key)] = run->record.path;
   }
   return {{"size", c.size},      {"kind", toString(c.kind)},      {"seed", g.seed_used},
           {"grid", gridRows(g.map)}, {"start", g.start}, {"goal", g.goal},
@@ -194,11 +194,11 @@ nlohmann::json exampleJson(const ScaleCase& c) {
 
 }  // namespace
 
-EarlyStopComparison compareEarlyStop(const ScaleCase& c, const std::string& full_key, const std::string& early_key) {
+EarlyStopComparison compareEarlyStop(const ScaleCase& c, VariantKey full_key, VariantKey early_key) {
   EarlyStopComparison e;
   const ScaleVariantResult* full = findVariant(c, full_key);
   const ScaleVariantResult* early = findVariant(c, early_key);
-  const ScaleVariantResult* astar = findVariant(c, "astar");
+  const ScaleVariantResult* astar = findVariant(c, VariantKey::kAStar);
   if (early == nullptr) return e;
   double cost = 0.0, gap = 0.0, iterations = 0.0;
   for (const ScaleRun& run : early->runs) {
@@ -258,7 +258,7 @@ std::string scaleCsv(const std::vector<ScaleCase>& cases) {
   for (const ScaleCase& c : cases)
     for (const ScaleVariantResult& v : c.variants) {
       const Summary& s = v.summary;
-      csv.addRow({toString(c.kind), std::to_string(c.size), v.variant.key, std::to_string(v.variant.threads),
+      csv.addRow({toString(c.kind), std::to_string(c.size), toString(v.variant.key), std::to_string(v.variant.threads),
                   std::to_string(v.variant.early_stop_iterations), std::to_string(s.runs),
                   std::to_string(v.skipped_seeds), std::to_string(s.successes), std::to_string(s.interrupted_runs),
                   csvNumber(s.avg_time_ms), csvNumber(s.median_time_ms), csvNumber(s.median_cpu_ms),

@@ -28,7 +28,7 @@ struct EarlyStopComparison {
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EarlyStopComparison, seeds, full_ms, early_ms, astar_ms, time_saved_pct,
                                    length_cost_pct, early_gap_pct, early_iterations, first_iteration_ms)
 
-EarlyStopComparison compareEarlyStop(const ScaleCase& c, const std::string& full_key, const std::string& early_key);
+EarlyStopComparison compareEarlyStop(const ScaleCase& c, VariantKey full_key, VariantKey early_key);
 
 nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions& options,
                          const Provenance& provenance);

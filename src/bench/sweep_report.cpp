@@ -7,6 +7,7 @@
 #include "paper_maps.hpp"
 #include "parameter_symbols.hpp"
 #include "report_format.hpp"
+#include "variant_key.hpp"
 
 namespace eaci_bench {
 
@@ -195,13 +196,13 @@ std::string sweepCsv(const std::vector<SweepPoint>& eaci, const std::vector<RhoP
                                     csvNumber(s.avg_time_ms)};
   };
   for (const SweepPoint& p : eaci) {
-    std::vector<std::string> row = {"eaci", p.axis, csvNumber(p.value), "", p.map, "eaci-" + p.strategy};
+    std::vector<std::string> row = {"eaci", p.axis, csvNumber(p.value), "", p.map, toString(eaciVariantKey(p.strategy))};
     for (const std::string& cell : common(p.summary)) row.push_back(cell);
     row.insert(row.end(), {"", ""});
     csv.addRow(row);
   }
   for (const RhoPoint& p : rho) {
-    std::vector<std::string> row = {"aco_rho", "aco_rho", csvNumber(p.rho), csvNumber(p.tau0), p.map, "aco"};
+    std::vector<std::string> row = {"aco_rho", "aco_rho", csvNumber(p.rho), csvNumber(p.tau0), p.map, toString(VariantKey::kAco)};
     for (const std::string& cell : common(p.summary)) row.push_back(cell);
     row.insert(row.end(), {csvNumber(p.paper.avg_iterations), csvNumber(p.paper.avg_lost_ants)});
     csv.addRow(row);
