@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -30,11 +29,14 @@
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/io/parameter_file.hpp"
+#include "eaci/io/text.hpp"
 #include "eaci/planner.hpp"
 #include "plan_image.hpp"
 #include "plan_json.hpp"
 
 namespace {
+
+using eaci::formatNumber;
 
 constexpr int kExitPath = 0;
 constexpr int kExitBadInput = 2;
@@ -50,21 +52,13 @@ class InputError : public std::runtime_error {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void onInterrupt(int) { g_interrupted = 1; }
 
-// Collapses a message to one line.
-std::string oneLine(const std::string& text) {
-  std::string out;
-  bool space = false;
-  for (char ch : text) {
-    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
-    if (ch == ' ' && (space || out.empty())) continue;
-    space = ch == ' ';
-    out += ch;
-  }
-  while (!out.empty() && out.back() == ' ') out.pop_back();
-  return out.empty() ? "unknown error" : out;
+// A message on one line, never empty.
+std::string errorLine(const std::string& message) {
+  const std::string line = eaci::oneLine(message);
+  return line.empty() ? "unknown error" : line;
 }
 
-void printError(const std::string& message) { std::cerr << kErrorPrefix << oneLine(message) << std::endl; }
+void printError(const std::string& message) { std::cerr << kErrorPrefix << errorLine(message) << std::endl; }
 
 struct Options {
   std::string map_path;
@@ -114,17 +108,6 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
   }
   const std::string error = eaci::validationError(p);
   if (!error.empty()) throw InputError("invalid parameter: " + error);
-}
-
-std::string formatNumber(double v, int precision = 4) {
-  std::ostringstream s;
-  s << std::setprecision(precision) << std::fixed << v;
-  std::string text = s.str();
-  if (text.find('.') != std::string::npos) {
-    while (text.back() == '0') text.pop_back();
-    if (text.back() == '.') text.pop_back();
-  }
-  return text;
 }
 
 // One of R,C / serial / X,Y (exactly one is set; checked before).
@@ -197,7 +180,7 @@ std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanConte
     if (r.islands.size() > 2) s << ", " << r.islands.size() - 2 << " islands";
     s << ", seed " << context.parameters.seed;
   } else {
-    s << ": " << oneLine(r.error);
+    s << ": " << errorLine(r.error);
   }
   return s.str();
 }
@@ -331,7 +314,7 @@ int run(int argc, char** argv) {
     eaci::PlanResult failed;
     failed.algorithm = algorithm;
     failed.status = eaci::PlanStatus::kInvalidInput;
-    failed.error = oneLine(message);
+    failed.error = errorLine(message);
     writeOutputs(o, failed, context, unknown, params);
     printError(message);
     return kExitBadInput;
