@@ -653,12 +653,12 @@ TEST(OccupancyMapWorld, CellAtWorldAndBack) {
   // (0.4, 3.9): column floor(1.4 / 0.5) = 2, row from the bottom floor(1.9 / 0.5) = 3 -> top-right cell.
   EXPECT_EQ(map.cellAtWorld(0.4, 3.9).value(), (Cell{0, 2}));
 
-  const Point2 centre = map.worldAtCell(Cell{3, 0});
-  EXPECT_DOUBLE_EQ(centre.x, -0.75);
-  EXPECT_DOUBLE_EQ(centre.y, 2.25);
-  const Point2 top_right = map.worldAtCell(Cell{0, 2});
-  EXPECT_DOUBLE_EQ(top_right.x, 0.25);
-  EXPECT_DOUBLE_EQ(top_right.y, 3.75);
+  const Eigen::Vector2d centre = map.worldAtCell(Cell{3, 0});
+  EXPECT_DOUBLE_EQ(centre.x(), -0.75);
+  EXPECT_DOUBLE_EQ(centre.y(), 2.25);
+  const Eigen::Vector2d top_right = map.worldAtCell(Cell{0, 2});
+  EXPECT_DOUBLE_EQ(top_right.x(), 0.25);
+  EXPECT_DOUBLE_EQ(top_right.y(), 3.75);
 
   EXPECT_FALSE(map.cellAtWorld(-1.01, 2.1));  // left of the map
   EXPECT_FALSE(map.cellAtWorld(-0.9, 1.99));  // below
@@ -668,8 +668,8 @@ TEST(OccupancyMapWorld, CellAtWorldAndBack) {
 
   for (int row = 0; row < map.height; ++row) {
     for (int col = 0; col < map.width; ++col) {
-      const Point2 p = map.worldAtCell(Cell{row, col});
-      EXPECT_EQ(map.cellAtWorld(p.x, p.y).value(), (Cell{row, col}));
+      const Eigen::Vector2d p = map.worldAtCell(Cell{row, col});
+      EXPECT_EQ(map.cellAtWorld(p.x(), p.y()).value(), (Cell{row, col}));
     }
   }
 }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
 #include "cli_args.hpp"
@@ -155,9 +156,9 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
 }
 
 std::string describeCell(const eaci::OccupancyMap& map, eaci::Cell c) {
-  const eaci::Point2 p = map.worldAtCell(c);
-  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x) + ", " +
-         formatNumber(p.y) + ") m";
+  const Eigen::Vector2d p = map.worldAtCell(c);
+  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x()) + ", " +
+         formatNumber(p.y()) + ") m";
 }
 
 std::string upper(std::string s) {

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace eaci::tools {
 namespace {
 
@@ -67,8 +69,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   for (const Cell& c : r.path) {
     path.push_back(cellJson(c));
     if (map) {
-      const Point2 p = map->worldAtCell(c);
-      path_xy.push_back(json::array({p.x, p.y}));
+      const Eigen::Vector2d p = map->worldAtCell(c);
+      path_xy.push_back(json::array({p.x(), p.y()}));
     }
   }
   j["path"] = std::move(path);
@@ -106,14 +108,14 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["start"] = optionalCellJson(context.start);
   j["goal"] = optionalCellJson(context.goal);
   if (map && context.start) {
-    const Point2 p = map->worldAtCell(*context.start);
-    j["start_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->worldAtCell(*context.start);
+    j["start_xy"] = json::array({p.x(), p.y()});
   } else {
     j["start_xy"] = nullptr;
   }
   if (map && context.goal) {
-    const Point2 p = map->worldAtCell(*context.goal);
-    j["goal_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->worldAtCell(*context.goal);
+    j["goal_xy"] = json::array({p.x(), p.y()});
   } else {
     j["goal_xy"] = nullptr;
   }

@@ -1,6 +1,8 @@
 // An owned occupancy map as loaded from disk, with its place in the world.
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -45,9 +47,8 @@ struct OccupancyMap {
   }
 
   // Map-frame centre of a cell.
-  Point2 worldAtCell(Cell c) const {
-    const Point2 local = cellCentre(c, height, resolution);
-    return Point2{origin_x + local.x, origin_y + local.y};
+  Eigen::Vector2d worldAtCell(Cell c) const {
+    return Eigen::Vector2d(origin_x, origin_y) + cellCentre(c, height, resolution);
   }
 };
 
