@@ -77,8 +77,7 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   {
     std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
     map_frame.frame_id = frame;
-    map_frame.origin_x = costmap->getOriginX();
-    map_frame.origin_y = costmap->getOriginY();
+    map_frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
     map_frame.resolution = costmap->getResolution();
     map_frame.width = static_cast<int>(costmap->getSizeInCellsX());
     map_frame.height = static_cast<int>(costmap->getSizeInCellsY());

@@ -69,7 +69,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   for (const Cell& c : r.path) {
     path.push_back(cellJson(c));
     if (map) {
-      const Eigen::Vector2d p = map->worldAtCell(c);
+      const Eigen::Vector2d p = map->cellToWorld(c);
       path_xy.push_back(json::array({p.x(), p.y()}));
     }
   }
@@ -99,7 +99,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     m["width"] = map->width;
     m["height"] = map->height;
     m["resolution"] = map->resolution;
-    m["origin"] = json::array({map->origin_x, map->origin_y, map->origin_yaw});
+    m["origin"] = json::array({map->origin.x(), map->origin.y(), map->origin_yaw});
   } else {
     m["width"] = m["height"] = m["resolution"] = m["origin"] = nullptr;
   }
@@ -108,13 +108,13 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["start"] = optionalCellJson(context.start);
   j["goal"] = optionalCellJson(context.goal);
   if (map && context.start) {
-    const Eigen::Vector2d p = map->worldAtCell(*context.start);
+    const Eigen::Vector2d p = map->cellToWorld(*context.start);
     j["start_xy"] = json::array({p.x(), p.y()});
   } else {
     j["start_xy"] = nullptr;
   }
   if (map && context.goal) {
-    const Eigen::Vector2d p = map->worldAtCell(*context.goal);
+    const Eigen::Vector2d p = map->cellToWorld(*context.goal);
     j["goal_xy"] = json::array({p.x(), p.y()});
   } else {
     j["goal_xy"] = nullptr;

@@ -66,7 +66,7 @@ double residentMiB(int pid) {
 }
 
 geometry_msgs::PoseStamped pose(const eaci::OccupancyMap& map, eaci::Cell cell, double dx, double dy) {
-  const Eigen::Vector2d centre = map.worldAtCell(cell);
+  const Eigen::Vector2d centre = map.cellToWorld(cell);
   geometry_msgs::PoseStamped p;
   p.header.frame_id = "map";
   p.pose.position.x = centre.x() + dx * map.resolution;
