@@ -6,7 +6,7 @@
 # Usage: scripts/install_deps.sh [extra-package ...]
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libstb-dev
+packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libstb-dev
           libgtest-dev libbenchmark-dev)
 if [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs

@@ -666,8 +666,7 @@ OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string&
   map.width = image.width;
   map.height = image.height;
   map.resolution = metadata.resolution;
-  map.origin_x = metadata.origin[0];
-  map.origin_y = metadata.origin[1];
+  map.origin = {metadata.origin[0], metadata.origin[1]};
   map.origin_yaw = metadata.origin[2];
   map.cells = thresholdImage(image, metadata.thresholds);
   return map;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
 #include "cli_args.hpp"
@@ -125,11 +126,11 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
       return eaci::cellFromSerial(g, map.width);
     }
     const auto [x, y] = eaci::cli::parseXY(xy, "--" + name + "-xy");
-    const std::optional<eaci::Cell> cell = map.cellAtWorld(x, y);
+    const std::optional<eaci::Cell> cell = map.worldToCell({x, y});
     if (!cell) {
-      const double x1 = map.origin_x + map.width * map.resolution, y1 = map.origin_y + map.height * map.resolution;
-      throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin_x) + " .. " +
-                       formatNumber(x1) + " m, y " + formatNumber(map.origin_y) + " .. " + formatNumber(y1) + " m)");
+      const double x1 = map.origin.x() + map.width * map.resolution, y1 = map.origin.y() + map.height * map.resolution;
+      throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin.x()) + " .. " +
+                       formatNumber(x1) + " m, y " + formatNumber(map.origin.y()) + " .. " + formatNumber(y1) + " m)");
     }
     return *cell;
   } catch (const std::invalid_argument& e) {
@@ -138,9 +139,9 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
 }
 
 std::string describeCell(const eaci::OccupancyMap& map, eaci::Cell c) {
-  const eaci::Point2 p = map.worldAtCell(c);
-  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x) + ", " +
-         formatNumber(p.y) + ") m";
+  const Eigen::Vector2d p = map.cellToWorld(c);
+  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x()) + ", " +
+         formatNumber(p.y()) + ") m";
 }
 
 std::string upper(std::string s) {

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "common/cell_json.hpp"
 #include "common/json_number.hpp"
 #include "common/parameters_json.hpp"
@@ -48,8 +50,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   for (const Cell& c : r.path) {
     path.push_back(c);
     if (map) {
-      const Point2 p = map->worldAtCell(c);
-      path_xy.push_back(json::array({p.x, p.y}));
+      const Eigen::Vector2d p = map->cellToWorld(c);
+      path_xy.push_back(json::array({p.x(), p.y()}));
     }
   }
   j["path"] = std::move(path);
@@ -76,7 +78,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     m["width"] = map->width;
     m["height"] = map->height;
     m["resolution"] = map->resolution;
-    m["origin"] = json::array({map->origin_x, map->origin_y, map->origin_yaw});
+    m["origin"] = json::array({map->origin.x(), map->origin.y(), map->origin_yaw});
   } else {
     m["width"] = m["height"] = m["resolution"] = m["origin"] = nullptr;
   }
@@ -85,14 +87,14 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["start"] = optionalCellJson(context.start);
   j["goal"] = optionalCellJson(context.goal);
   if (map && context.start) {
-    const Point2 p = map->worldAtCell(*context.start);
-    j["start_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->cellToWorld(*context.start);
+    j["start_xy"] = json::array({p.x(), p.y()});
   } else {
     j["start_xy"] = nullptr;
   }
   if (map && context.goal) {
-    const Point2 p = map->worldAtCell(*context.goal);
-    j["goal_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->cellToWorld(*context.goal);
+    j["goal_xy"] = json::array({p.x(), p.y()});
   } else {
     j["goal_xy"] = nullptr;
   }
