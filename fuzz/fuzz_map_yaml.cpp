@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(map.width >= 1 && map.height >= 1);
   FUZZ_CHECK(map.cells.size() == static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
   FUZZ_CHECK(std::isfinite(map.resolution) && map.resolution > 0.0);
-  FUZZ_CHECK(std::isfinite(map.origin_x) && std::isfinite(map.origin_y) && std::isfinite(map.origin_yaw));
+  FUZZ_CHECK(map.origin.allFinite() && std::isfinite(map.origin_yaw));
   for (const std::uint8_t cell : map.cells) {
     FUZZ_CHECK(cell == eaci::kFreeValue || cell == eaci::kOccupiedValue || cell == eaci::kUnknownValue);
   }

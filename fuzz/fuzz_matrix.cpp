@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   FUZZ_CHECK(map.width >= 1 && map.height >= 1);
   FUZZ_CHECK(map.cells.size() == static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
-  FUZZ_CHECK(map.resolution == 1.0 && map.origin_x == 0.0 && map.origin_y == 0.0);
+  FUZZ_CHECK(map.resolution == 1.0 && map.origin == Eigen::Vector2d::Zero());
   std::string text;
   for (std::size_t i = 0; i < map.cells.size(); ++i) {
     FUZZ_CHECK(map.cells[i] == eaci::kFreeValue || map.cells[i] == eaci::kOccupiedValue);

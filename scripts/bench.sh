@@ -1,27 +1,27 @@
 #!/usr/bin/env bash
-# Builds eaci_bench (Release, no ROS, into build-bench/) and runs the four benchmarks into
+# Builds eaci_bench (Release, no ROS, into build/bench/) and runs the four benchmarks into
 # out/bench/, then draws the figures into docs/figures/.
 #   paper  - the paper's Tables 1-3 on its maps, 20 seeds          (about 10 s)
 #   sweep  - Figs 11-14 parameter studies and classic ACO's rho/tau0 (about 1-2 min)
 #   scale  - generated maps 50..800 cells, time, memory, gap to A*  (about 1-2 min)
 #   deadline - 800 x 800 maps, wall time against max_planning_time  (about 30 s)
 # Usage: scripts/bench.sh [paper|sweep|scale|deadline|plot ...]   (default: all of them)
-# Maps are read from ${EACI_MAPS_DIR:-../shared/maps}. Timings are only as good as the
+# Maps are read from ${EACI_MAPS_DIR:-maps/paper}. Timings are only as good as the
 # machine is quiet: the reports record the load average at the start of each run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH=/usr/bin:$PATH   # Debian's python3 (matplotlib, numpy), not a pyenv shim
 
-maps=${EACI_MAPS_DIR:-../shared/maps}
+maps=${EACI_MAPS_DIR:-maps/paper}
 out=out/bench
 figures=docs/figures
-bench=build-bench/bin/eaci_bench
+bench=build/bench/bin/eaci_bench
 steps=("$@")
 [ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale deadline plot)
 
 EACI_WITH_ROS=OFF scripts/install_deps.sh python3-matplotlib python3-numpy
-cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_BUILD_TESTS=OFF >/dev/null
-cmake --build build-bench -j"$(nproc)" --target eaci_bench
+cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_BUILD_TESTS=OFF >/dev/null
+cmake --build build/bench -j"$(nproc)" --target eaci_bench
 
 load=$(cut -d' ' -f1 /proc/loadavg)
 if awk -v l="$load" 'BEGIN { exit !(l > 0.5) }'; then

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, clang + AddressSanitizer + UBSan) in build-fuzz/ and runs
+# Builds the libFuzzer targets (fuzz/, clang + AddressSanitizer + UBSan) in build/fuzzer/ and runs
 # each for SECONDS_PER_TARGET seconds on a copy of its seed corpus (fuzz/corpus/<target>/ is
 # never written). Fails when any target crashes, leaks, times out or runs out of memory; the
-# offending input is kept in build-fuzz/fuzz-run/artifacts/. See docs/fuzzing.md.
+# offending input is kept in build/fuzzer/fuzz-run/artifacts/. See docs/fuzzing.md.
 #
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]      (default 30; CI: scripts/fuzz.sh 20)
 # Environment:
 #   EACI_FUZZ_TARGETS  targets to run, e.g. "pgm image" (default: all)
 #   EACI_FUZZ_JOBS     targets run at the same time (default: the number of cores)
-#   EACI_FUZZ_BUILD    build directory (default: build-fuzz)
+#   EACI_FUZZ_BUILD    build directory (default: build/fuzzer)
 #   EACI_FUZZ_KEEP     set to 1 to keep the grown corpora of the previous run and go on from them
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,7 +19,7 @@ case "$seconds" in ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET
 all_targets=(pgm image matrix map_yaml parameters params_yaml cli_args)
 read -r -a targets <<< "${EACI_FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=${EACI_FUZZ_JOBS:-$(nproc)}
-build=${EACI_FUZZ_BUILD:-build-fuzz}
+build=${EACI_FUZZ_BUILD:-build/fuzzer}
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 
 # ---------------------------------------------------------------- clang with libFuzzer

@@ -6,12 +6,13 @@
 # Usage: scripts/install_deps.sh [extra-package ...]
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libstb-dev
+packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libstb-dev
           libgtest-dev libbenchmark-dev)
 if [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs
              libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev
-             rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools)
+             rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools
+             python3-rospy python3-std-msgs python3-nav-msgs)
 fi
 packages+=("$@")
 

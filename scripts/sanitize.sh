@@ -16,17 +16,17 @@ configure() {  # configure BUILD_DIR SANITIZERS
 }
 
 if [ "$what" = asan ] || [ "$what" = all ]; then
-  echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer (build-asan)"
-  configure build-asan address,undefined
-  cmake --build build-asan -j"$jobs" --target eaci_tests eaci_plan
+  echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer (build/asan)"
+  configure build/asan address,undefined
+  cmake --build build/asan -j"$jobs" --target eaci_tests eaci_plan
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$jobs" -E '^PaperMaps\.'
+    ctest --test-dir build/asan --output-on-failure -j"$jobs" -E '^PaperMaps\.'
 fi
 
 if [ "$what" = tsan ] || [ "$what" = all ]; then
-  echo "sanitize: ThreadSanitizer on the multi-threaded solver tests (build-tsan)"
-  configure build-tsan thread
-  cmake --build build-tsan -j"$jobs" --target eaci_tests
+  echo "sanitize: ThreadSanitizer on the multi-threaded solver tests (build/tsan)"
+  configure build/tsan thread
+  cmake --build build/tsan -j"$jobs" --target eaci_tests
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-    build-tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*'
+    build/tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*'
 fi

@@ -26,12 +26,12 @@ TEST(CellNumbering, SerialToCellIsTheInverse) {
 TEST(CellNumbering, CentreCoordinatesHaveTheOriginBottomLeft) {
   // Eq. 3-4 with 1-based r, c: x = (c - 0.5) a, y = (H - r + 0.5) a.
   const auto top_left = eaci::cellCentre(Cell{0, 0}, 10, 1.0);
-  EXPECT_DOUBLE_EQ(top_left.x, 0.5);
-  EXPECT_DOUBLE_EQ(top_left.y, 9.5);
+  EXPECT_DOUBLE_EQ(top_left.x(), 0.5);
+  EXPECT_DOUBLE_EQ(top_left.y(), 9.5);
   const auto g25 = eaci::cellCentre(Cell{2, 4}, 10, 0.2);  // r = 3, c = 5
-  EXPECT_DOUBLE_EQ(g25.x, 4.5 * 0.2);
-  EXPECT_DOUBLE_EQ(g25.y, 7.5 * 0.2);
+  EXPECT_DOUBLE_EQ(g25.x(), 4.5 * 0.2);
+  EXPECT_DOUBLE_EQ(g25.y(), 7.5 * 0.2);
   const auto bottom_right = eaci::cellCentre(Cell{9, 9}, 10, 1.0);
-  EXPECT_DOUBLE_EQ(bottom_right.x, 9.5);
-  EXPECT_DOUBLE_EQ(bottom_right.y, 0.5);
+  EXPECT_DOUBLE_EQ(bottom_right.x(), 9.5);
+  EXPECT_DOUBLE_EQ(bottom_right.y(), 0.5);
 }

@@ -16,6 +16,12 @@ using namespace eaci::robot;
 
 namespace {
 constexpr double kPiTest = 3.14159265358979323846;
+
+Pose2 poseAt(double x, double y, double yaw) { return Pose2{{x, y}, Eigen::Rotation2Dd(yaw)}; }
+
+double distanceBetween(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.position.x() - b.position.x(), a.position.y() - b.position.y());
+}
 }  // namespace
 
 TEST(DiffDrive, StraightMotionHasEqualWheelSpeeds) {
@@ -64,31 +70,31 @@ TEST(DiffDrive, WheelSpeedsAndTwistAreInverse) {
 
 TEST(DiffDrive, IntegratesAQuarterCircleExactly) {
   // Radius v/omega = 1 about (0, 1): from (0, 0) facing +x to (1, 1) facing +y.
-  const Pose2 end = integrate({0.0, 0.0, 0.0}, 1.0, 1.0, kPiTest / 2);
-  EXPECT_NEAR(end.x, 1.0, 1e-12);
-  EXPECT_NEAR(end.y, 1.0, 1e-12);
-  EXPECT_NEAR(end.yaw, kPiTest / 2, 1e-12);
+  const Pose2 end = integrate(poseAt(0.0, 0.0, 0.0), 1.0, 1.0, kPiTest / 2);
+  EXPECT_NEAR(end.position.x(), 1.0, 1e-12);
+  EXPECT_NEAR(end.position.y(), 1.0, 1e-12);
+  EXPECT_NEAR(end.orientation.angle(), kPiTest / 2, 1e-12);
   // A clockwise quarter circle of radius 0.5 from (0, 0): to (0.5, -0.5) facing -y.
-  const Pose2 cw = integrate({0.0, 0.0, 0.0}, 0.5, -1.0, kPiTest / 2);
-  EXPECT_NEAR(cw.x, 0.5, 1e-12);
-  EXPECT_NEAR(cw.y, -0.5, 1e-12);
-  EXPECT_NEAR(cw.yaw, -kPiTest / 2, 1e-12);
+  const Pose2 cw = integrate(poseAt(0.0, 0.0, 0.0), 0.5, -1.0, kPiTest / 2);
+  EXPECT_NEAR(cw.position.x(), 0.5, 1e-12);
+  EXPECT_NEAR(cw.position.y(), -0.5, 1e-12);
+  EXPECT_NEAR(cw.orientation.angle(), -kPiTest / 2, 1e-12);
 }
 
 TEST(DiffDrive, ManySmallStepsEqualOneBigStep) {
-  Pose2 pose{0.3, -0.2, 0.5};
+  Pose2 pose = poseAt(0.3, -0.2, 0.5);
   for (int k = 0; k < 100; ++k) pose = integrate(pose, 0.4, 0.8, 0.03);
-  const Pose2 once = integrate({0.3, -0.2, 0.5}, 0.4, 0.8, 3.0);
-  EXPECT_NEAR(pose.x, once.x, 1e-12);
-  EXPECT_NEAR(pose.y, once.y, 1e-12);
-  EXPECT_NEAR(pose.yaw, once.yaw, 1e-12);
+  const Pose2 once = integrate(poseAt(0.3, -0.2, 0.5), 0.4, 0.8, 3.0);
+  EXPECT_NEAR(pose.position.x(), once.position.x(), 1e-12);
+  EXPECT_NEAR(pose.position.y(), once.position.y(), 1e-12);
+  EXPECT_NEAR(pose.orientation.angle(), once.orientation.angle(), 1e-12);
 }
 
 TEST(DiffDrive, IntegratesAStraightLine) {
-  const Pose2 end = integrate({1.0, 2.0, kPiTest / 4}, 0.5, 0.0, 2.0);  // 1 m at 45 degrees
-  EXPECT_NEAR(end.x, 1.0 + std::sqrt(0.5), 1e-12);
-  EXPECT_NEAR(end.y, 2.0 + std::sqrt(0.5), 1e-12);
-  EXPECT_NEAR(end.yaw, kPiTest / 4, 1e-15);
+  const Pose2 end = integrate(poseAt(1.0, 2.0, kPiTest / 4), 0.5, 0.0, 2.0);  // 1 m at 45 degrees
+  EXPECT_NEAR(end.position.x(), 1.0 + std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(end.position.y(), 2.0 + std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(end.orientation.angle(), kPiTest / 4, 1e-15);
 }
 
 TEST(DiffDrive, YawIsNormalisedToHalfOpenPiInterval) {
@@ -96,10 +102,10 @@ TEST(DiffDrive, YawIsNormalisedToHalfOpenPiInterval) {
   EXPECT_DOUBLE_EQ(normalizeAngle(kPiTest), kPiTest);
   EXPECT_NEAR(normalizeAngle(3 * kPiTest), kPiTest, 1e-12);
   EXPECT_NEAR(normalizeAngle(-kPiTest / 2 - 4 * kPiTest), -kPiTest / 2, 1e-12);
-  const Pose2 end = integrate({0.0, 0.0, 3.0}, 0.0, 1.0, 1.0);  // yaw 4 rad = 4 - 2 pi
-  EXPECT_NEAR(end.yaw, 4.0 - 2 * kPiTest, 1e-12);
-  EXPECT_DOUBLE_EQ(end.x, 0.0);  // in place: v = 0
-  EXPECT_DOUBLE_EQ(end.y, 0.0);
+  const Pose2 end = integrate(poseAt(0.0, 0.0, 3.0), 0.0, 1.0, 1.0);  // yaw 4 rad = 4 - 2 pi
+  EXPECT_NEAR(end.orientation.angle(), 4.0 - 2 * kPiTest, 1e-12);
+  EXPECT_DOUBLE_EQ(end.position.x(), 0.0);  // in place: v = 0
+  EXPECT_DOUBLE_EQ(end.position.y(), 0.0);
 }
 
 TEST(DiffDrive, SaturationKeepsTheTurningRadius) {
@@ -139,7 +145,7 @@ TEST(DiffDrive, SimulatedRobotAppliesLimitsAndCountsWheelRotation) {
   DiffDriveRobot robot(p);
   const BodyTwist executed = robot.step(1.0, 0.0, 0.1);  // asks 1 m/s, wheels give 0.5
   EXPECT_DOUBLE_EQ(executed.v, 0.5);
-  EXPECT_NEAR(robot.pose().x, 0.05, 1e-15);
+  EXPECT_NEAR(robot.pose().position.x(), 0.05, 1e-15);
   EXPECT_NEAR(robot.leftWheelAngle(), 0.05 / 0.0325, 1e-12);
   EXPECT_NEAR(robot.rightWheelAngle(), 0.05 / 0.0325, 1e-12);
 
@@ -208,7 +214,7 @@ double driveAndTrack(DiffDriveRobot& robot, WheelEncoders& encoders, EncoderOdom
     robot.step(v, omega, h);
     encoders.rotate(robot.leftWheelAngle() - left_before, robot.rightWheelAngle() - right_before);
     const Pose2& odom = odometry.update(encoders.counts());
-    max_error = std::max(max_error, std::hypot(odom.x - robot.pose().x, odom.y - robot.pose().y));
+    max_error = std::max(max_error, distanceBetween(odom, robot.pose()));
   }
   return max_error;
 }
@@ -241,9 +247,9 @@ SquareRun driveSquare(const EncoderParams& encoder_params) {
 TEST(WheelEncoders, NoiseFreeOdometryOfASquareMatchesTheTruth) {
   const SquareRun run = driveSquare(EncoderParams{});
   // The truth closes the square.
-  EXPECT_NEAR(run.truth.x, 0.0, 1e-9);
-  EXPECT_NEAR(run.truth.y, 0.0, 1e-9);
-  EXPECT_NEAR(run.truth.yaw, 0.0, 1e-9);
+  EXPECT_NEAR(run.truth.position.x(), 0.0, 1e-9);
+  EXPECT_NEAR(run.truth.position.y(), 0.0, 1e-9);
+  EXPECT_NEAR(run.truth.orientation.angle(), 0.0, 1e-9);
   // One tick rolls delta = 2 pi r / 1560 = 0.1309 mm. Counts are the floors of the exact
   // tick positions, so each wheel's distance is off by < delta at all times, the yaw
   // (d_R - d_L)/B by < 2 delta / B = 1.50 mrad, and the position by at most
@@ -253,8 +259,8 @@ TEST(WheelEncoders, NoiseFreeOdometryOfASquareMatchesTheTruth) {
   const double position_bound = 4.0 * yaw_bound + (1 + 2 * kPiTest) * delta;
   EXPECT_NEAR(position_bound, 0.0069, 0.0001);
   EXPECT_LT(run.max_error, position_bound);
-  EXPECT_LT(std::hypot(run.odometry.x - run.truth.x, run.odometry.y - run.truth.y), position_bound);
-  EXPECT_LT(std::abs(normalizeAngle(run.odometry.yaw - run.truth.yaw)), yaw_bound);
+  EXPECT_LT(distanceBetween(run.odometry, run.truth), position_bound);
+  EXPECT_LT(std::abs(normalizeAngle(run.odometry.orientation.angle() - run.truth.orientation.angle())), yaw_bound);
   std::cout << "[ measured ] noise-free square: max odometry error " << run.max_error * 1000 << " mm (bound "
             << position_bound * 1000 << " mm)\n";
 }
@@ -265,15 +271,15 @@ TEST(WheelEncoders, NoiseIsDeterministicPerSeed) {
   noisy.seed = 7;
   const SquareRun a = driveSquare(noisy);
   const SquareRun b = driveSquare(noisy);
-  EXPECT_EQ(a.odometry.x, b.odometry.x);
-  EXPECT_EQ(a.odometry.y, b.odometry.y);
-  EXPECT_EQ(a.odometry.yaw, b.odometry.yaw);
+  EXPECT_EQ(a.odometry.position.x(), b.odometry.position.x());
+  EXPECT_EQ(a.odometry.position.y(), b.odometry.position.y());
+  EXPECT_EQ(a.odometry.orientation.angle(), b.odometry.orientation.angle());
   noisy.seed = 8;
   const SquareRun c = driveSquare(noisy);
-  EXPECT_GT(std::hypot(a.odometry.x - c.odometry.x, a.odometry.y - c.odometry.y), 1e-6);
+  EXPECT_GT(distanceBetween(a.odometry, c.odometry), 1e-6);
   // The noise makes a difference to the noise-free run.
   const SquareRun exact = driveSquare(EncoderParams{});
-  EXPECT_GT(std::hypot(a.odometry.x - exact.odometry.x, a.odometry.y - exact.odometry.y), 1e-6);
+  EXPECT_GT(distanceBetween(a.odometry, exact.odometry), 1e-6);
 }
 
 TEST(WheelEncoders, UniformNoiseStaysWithinItsAmplitude) {

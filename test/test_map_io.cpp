@@ -312,8 +312,8 @@ TEST_F(MapIoFiles, YamlWithBinaryPgmGivesThresholdedCellsAndPose) {
   EXPECT_EQ(map.width, 3);
   EXPECT_EQ(map.height, 2);
   EXPECT_DOUBLE_EQ(map.resolution, 0.1);
-  EXPECT_DOUBLE_EQ(map.origin_x, -1.5);
-  EXPECT_DOUBLE_EQ(map.origin_y, 2.0);
+  EXPECT_DOUBLE_EQ(map.origin.x(), -1.5);
+  EXPECT_DOUBLE_EQ(map.origin.y(), 2.0);
   EXPECT_DOUBLE_EQ(map.origin_yaw, 0.3);
   EXPECT_EQ(map.cells, kSampleCells);
 }
@@ -458,8 +458,8 @@ TEST(ParseMatrixText, SeparatorsCommentsAndLineEndingsAllGiveTheSameMap) {
     EXPECT_EQ(map.height, 2) << text;
     EXPECT_EQ(map.cells, expected) << text;
     EXPECT_DOUBLE_EQ(map.resolution, 1.0);
-    EXPECT_DOUBLE_EQ(map.origin_x, 0.0);
-    EXPECT_DOUBLE_EQ(map.origin_y, 0.0);
+    EXPECT_DOUBLE_EQ(map.origin.x(), 0.0);
+    EXPECT_DOUBLE_EQ(map.origin.y(), 0.0);
   }
 }
 
@@ -603,8 +603,8 @@ TEST(LabMap, IsA96By60MapServerMapWithAWall) {
   ASSERT_EQ(map.width, 96);
   ASSERT_EQ(map.height, 60);
   EXPECT_DOUBLE_EQ(map.resolution, 0.05);
-  EXPECT_DOUBLE_EQ(map.origin_x, 0.0);
-  EXPECT_DOUBLE_EQ(map.origin_y, 0.0);
+  EXPECT_DOUBLE_EQ(map.origin.x(), 0.0);
+  EXPECT_DOUBLE_EQ(map.origin.y(), 0.0);
   EXPECT_DOUBLE_EQ(map.origin_yaw, 0.0);
   for (std::uint8_t value : map.cells) EXPECT_TRUE(value == kFreeValue || value == kOccupiedValue);
   const GridView view = map.view();
@@ -624,8 +624,8 @@ TEST(LabMap, IsA96By60MapServerMapWithAWall) {
 
 TEST(LabMap, StartAndGoalAreConnectedForTheInflatedRobot) {
   const OccupancyMap map = loadMap(std::string(EACI_SOURCE_DIR) + "/maps/lab.yaml");
-  const auto start = map.cellAtWorld(0.4, 0.4);
-  const auto goal = map.cellAtWorld(4.4, 2.6);
+  const auto start = map.worldToCell({0.4, 0.4});
+  const auto goal = map.worldToCell({4.4, 2.6});
   ASSERT_TRUE(start && goal);
   EXPECT_EQ(*start, (Cell{51, 8}));
   EXPECT_EQ(*goal, (Cell{7, 88}));
@@ -638,39 +638,38 @@ TEST(LabMap, StartAndGoalAreConnectedForTheInflatedRobot) {
 
 // ------------------------------------------------------------------ OccupancyMap world <-> cell
 
-TEST(OccupancyMapWorld, CellAtWorldAndBack) {
+TEST(OccupancyMapWorld, WorldToCellAndBack) {
   OccupancyMap map;
   map.width = 3;
   map.height = 4;
   map.resolution = 0.5;
-  map.origin_x = -1.0;
-  map.origin_y = 2.0;
+  map.origin = {-1.0, 2.0};
   map.cells.assign(12, kFreeValue);
 
   // (-0.9, 2.1) is 0.1 m right of and above the origin: the bottom-left cell, row 3 (of 0..3), column 0.
-  const auto bottom_left = map.cellAtWorld(-0.9, 2.1);
+  const auto bottom_left = map.worldToCell({-0.9, 2.1});
   ASSERT_TRUE(bottom_left);
   EXPECT_EQ(*bottom_left, (Cell{3, 0}));
   // (0.4, 3.9): column floor(1.4 / 0.5) = 2, row from the bottom floor(1.9 / 0.5) = 3 -> top-right cell.
-  EXPECT_EQ(map.cellAtWorld(0.4, 3.9).value(), (Cell{0, 2}));
+  EXPECT_EQ(map.worldToCell({0.4, 3.9}).value(), (Cell{0, 2}));
 
-  const Point2 centre = map.worldAtCell(Cell{3, 0});
-  EXPECT_DOUBLE_EQ(centre.x, -0.75);
-  EXPECT_DOUBLE_EQ(centre.y, 2.25);
-  const Point2 top_right = map.worldAtCell(Cell{0, 2});
-  EXPECT_DOUBLE_EQ(top_right.x, 0.25);
-  EXPECT_DOUBLE_EQ(top_right.y, 3.75);
+  const Eigen::Vector2d centre = map.cellToWorld(Cell{3, 0});
+  EXPECT_DOUBLE_EQ(centre.x(), -0.75);
+  EXPECT_DOUBLE_EQ(centre.y(), 2.25);
+  const Eigen::Vector2d top_right = map.cellToWorld(Cell{0, 2});
+  EXPECT_DOUBLE_EQ(top_right.x(), 0.25);
+  EXPECT_DOUBLE_EQ(top_right.y(), 3.75);
 
-  EXPECT_FALSE(map.cellAtWorld(-1.01, 2.1));  // left of the map
-  EXPECT_FALSE(map.cellAtWorld(-0.9, 1.99));  // below
-  EXPECT_FALSE(map.cellAtWorld(0.5, 2.1));    // x = right edge: column 3 does not exist
-  EXPECT_FALSE(map.cellAtWorld(-0.9, 4.0));   // y = top edge
-  EXPECT_FALSE(map.cellAtWorld(std::nan(""), 2.1));
+  EXPECT_FALSE(map.worldToCell({-1.01, 2.1}));  // left of the map
+  EXPECT_FALSE(map.worldToCell({-0.9, 1.99}));  // below
+  EXPECT_FALSE(map.worldToCell({0.5, 2.1}));    // x = right edge: column 3 does not exist
+  EXPECT_FALSE(map.worldToCell({-0.9, 4.0}));   // y = top edge
+  EXPECT_FALSE(map.worldToCell({std::nan(""), 2.1}));
 
   for (int row = 0; row < map.height; ++row) {
     for (int col = 0; col < map.width; ++col) {
-      const Point2 p = map.worldAtCell(Cell{row, col});
-      EXPECT_EQ(map.cellAtWorld(p.x, p.y).value(), (Cell{row, col}));
+      const Eigen::Vector2d p = map.cellToWorld(Cell{row, col});
+      EXPECT_EQ(map.worldToCell(p).value(), (Cell{row, col}));
     }
   }
 }

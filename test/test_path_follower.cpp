@@ -19,15 +19,23 @@ namespace {
 constexpr double kPiTest = 3.14159265358979323846;
 constexpr double kDt = 0.02;  // 50 Hz
 
-double distanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
-  const double dx = b.x - a.x;
-  const double dy = b.y - a.y;
-  const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+using Eigen::Vector2d;
+
+Pose2 poseAt(double x, double y, double yaw) { return Pose2{{x, y}, Eigen::Rotation2Dd(yaw)}; }
+
+double distanceTo(const Pose2& pose, const Vector2d& p) {
+  return std::hypot(pose.position.x() - p.x(), pose.position.y() - p.y());
 }
 
-double crossTrackError(const Point2& p, const std::vector<Point2>& path) {
-  if (path.size() == 1) return std::hypot(p.x - path[0].x, p.y - path[0].y);
+double distanceToSegment(const Vector2d& p, const Vector2d& a, const Vector2d& b) {
+  const double dx = b.x() - a.x();
+  const double dy = b.y() - a.y();
+  const double t = std::clamp(((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  return std::hypot(p.x() - (a.x() + t * dx), p.y() - (a.y() + t * dy));
+}
+
+double crossTrackError(const Vector2d& p, const std::vector<Vector2d>& path) {
+  if (path.size() == 1) return std::hypot(p.x() - path[0].x(), p.y() - path[0].y());
   double best = 1e300;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) best = std::min(best, distanceToSegment(p, path[k], path[k + 1]));
   return best;
@@ -48,8 +56,8 @@ struct FollowRun {
 };
 
 // Follows `path` from `start` with the default robot (wheel limits and 2 m/s^2) at 50 Hz.
-FollowRun follow(const std::vector<Point2>& path, const Pose2& start, std::optional<double> goal_yaw = std::nullopt,
-           const PathFollowerParams& params = {}, Point2 corner = {1e9, 1e9}, double time_limit = 20.0) {
+FollowRun follow(const std::vector<Vector2d>& path, const Pose2& start, std::optional<double> goal_yaw = std::nullopt,
+           const PathFollowerParams& params = {}, Vector2d corner = {1e9, 1e9}, double time_limit = 20.0) {
   DiffDriveRobot robot(DiffDriveParams{}, start);
   PathFollower follower(params);
   follower.setPath(path, goal_yaw);
@@ -65,7 +73,7 @@ FollowRun follow(const std::vector<Point2>& path, const Pose2& start, std::optio
     last_progress = follower.progress();
     if (cmd.state == FollowerState::kRotating && cmd.v == 0.0) {
       ++run.rotating_in_place_steps;
-      if (std::hypot(robot.pose().x - corner.x, robot.pose().y - corner.y) < 0.1) run.rotated_at_corner = true;
+      if (distanceTo(robot.pose(), corner) < 0.1) run.rotated_at_corner = true;
     }
     if (cmd.state == FollowerState::kArrived) {
       run.arrived = true;
@@ -73,20 +81,18 @@ FollowRun follow(const std::vector<Point2>& path, const Pose2& start, std::optio
       break;
     }
     robot.step(cmd.v, cmd.omega, kDt);
-    run.max_cross_track = std::max(run.max_cross_track, crossTrackError({robot.pose().x, robot.pose().y}, path));
+    run.max_cross_track = std::max(run.max_cross_track, crossTrackError(robot.pose().position, path));
   }
   run.final_pose = robot.pose();
   return run;
 }
 
-double distanceTo(const Pose2& pose, const Point2& p) { return std::hypot(pose.x - p.x, pose.y - p.y); }
-
 }  // namespace
 
 TEST(PathFollower, FollowsAnLShapedPathTurningInPlaceAtTheCorner) {
-  const std::vector<Point2> path = {{0, 0}, {1, 0}, {1, 1}};
+  const std::vector<Vector2d> path = {{0, 0}, {1, 0}, {1, 1}};
   const PathFollowerParams params;
-  const FollowRun run = follow(path, {0, 0, 0}, std::nullopt, params, {1, 0});
+  const FollowRun run = follow(path, poseAt(0, 0, 0), std::nullopt, params, {1, 0});
   ASSERT_TRUE(run.arrived);
   // 2 m at 0.3 m/s is 6.7 s; braking into the corner and the goal and a quarter turn add a
   // few seconds: well under 20 s.
@@ -104,34 +110,34 @@ TEST(PathFollower, FollowsAnLShapedPathTurningInPlaceAtTheCorner) {
 }
 
 TEST(PathFollower, APathBehindTheRobotMakesItRotateFirst) {
-  const std::vector<Point2> path = {{0, 0}, {-1, 0}};
+  const std::vector<Vector2d> path = {{0, 0}, {-1, 0}};
   PathFollower follower;
   follower.setPath(path);
-  const FollowerCommand first = follower.compute({0, 0, 0}, kDt);
+  const FollowerCommand first = follower.compute(poseAt(0, 0, 0), kDt);
   EXPECT_EQ(first.state, FollowerState::kRotating);
   EXPECT_EQ(first.v, 0.0);
   EXPECT_NE(first.omega, 0.0);
   EXPECT_LE(std::abs(first.omega), 1.5);
 
-  const FollowRun run = follow(path, {0, 0, 0});
+  const FollowRun run = follow(path, poseAt(0, 0, 0));
   ASSERT_TRUE(run.arrived);
   EXPECT_EQ(run.states.front(), FollowerState::kRotating);
   EXPECT_LE(distanceTo(run.final_pose, path.back()), 0.05);
-  EXPECT_NEAR(std::abs(run.final_pose.yaw), kPiTest, 0.2);  // facing -x
+  EXPECT_NEAR(std::abs(run.final_pose.orientation.angle()), kPiTest, 0.2);  // facing -x
 }
 
 TEST(PathFollower, EmptyPathIsIdle) {
   PathFollower follower;
-  FollowerCommand cmd = follower.compute({0, 0, 0}, kDt);
+  FollowerCommand cmd = follower.compute(poseAt(0, 0, 0), kDt);
   EXPECT_EQ(cmd.state, FollowerState::kIdle);
   EXPECT_EQ(cmd.v, 0.0);
   EXPECT_EQ(cmd.omega, 0.0);
   follower.setPath({});
-  EXPECT_EQ(follower.compute({0, 0, 0}, kDt).state, FollowerState::kIdle);
+  EXPECT_EQ(follower.compute(poseAt(0, 0, 0), kDt).state, FollowerState::kIdle);
   follower.setPath({{1, 0}});
-  EXPECT_EQ(follower.compute({0, 0, 0}, kDt).state, FollowerState::kDriving);
+  EXPECT_EQ(follower.compute(poseAt(0, 0, 0), kDt).state, FollowerState::kDriving);
   follower.clear();
-  cmd = follower.compute({0, 0, 0}, kDt);
+  cmd = follower.compute(poseAt(0, 0, 0), kDt);
   EXPECT_EQ(cmd.state, FollowerState::kIdle);
   EXPECT_EQ(cmd.v, 0.0);
 }
@@ -139,41 +145,41 @@ TEST(PathFollower, EmptyPathIsIdle) {
 TEST(PathFollower, StartingAtTheGoalArrivesAtOnce) {
   PathFollower follower;
   follower.setPath({{0, 0}, {1, 0}});
-  const FollowerCommand cmd = follower.compute({1.03, 0.0, 2.0}, kDt);  // 3 cm < goal_tolerance
+  const FollowerCommand cmd = follower.compute(poseAt(1.03, 0.0, 2.0), kDt);  // 3 cm < goal_tolerance
   EXPECT_EQ(cmd.state, FollowerState::kArrived);
   EXPECT_EQ(cmd.v, 0.0);
   EXPECT_EQ(cmd.omega, 0.0);
-  EXPECT_EQ(follower.compute({5, 5, 0}, kDt).state, FollowerState::kArrived);  // stays until a new path
+  EXPECT_EQ(follower.compute(poseAt(5, 5, 0), kDt).state, FollowerState::kArrived);  // stays until a new path
 }
 
 TEST(PathFollower, DrivesToASinglePoint) {
-  const std::vector<Point2> path = {{1.0, 0.5}};
-  const FollowRun run = follow(path, {0, 0, 0});
+  const std::vector<Vector2d> path = {{1.0, 0.5}};
+  const FollowRun run = follow(path, poseAt(0, 0, 0));
   ASSERT_TRUE(run.arrived);
   EXPECT_EQ(run.states.front(), FollowerState::kDriving);  // 26.6 degrees off: below the 45 threshold
   EXPECT_LE(distanceTo(run.final_pose, path[0]), 0.05);
 }
 
 TEST(PathFollower, TurnsToTheGoalYawAfterArriving) {
-  const std::vector<Point2> path = {{0, 0}, {0.6, 0}};
-  const FollowRun run = follow(path, {0, 0, 0}, kPiTest / 2);
+  const std::vector<Vector2d> path = {{0, 0}, {0.6, 0}};
+  const FollowRun run = follow(path, poseAt(0, 0, 0), kPiTest / 2);
   ASSERT_TRUE(run.arrived);
-  EXPECT_NEAR(run.final_pose.yaw, kPiTest / 2, 0.1);
+  EXPECT_NEAR(run.final_pose.orientation.angle(), kPiTest / 2, 0.1);
   EXPECT_LE(distanceTo(run.final_pose, path.back()), 0.05);
   ASSERT_GE(run.states.size(), 2u);
   EXPECT_EQ(run.states[run.states.size() - 2], FollowerState::kRotating);  // the final turn in place
 
   PathFollowerParams no_align;
   no_align.align_final_yaw = false;
-  const FollowRun plain = follow(path, {0, 0, 0}, kPiTest / 2, no_align);
+  const FollowRun plain = follow(path, poseAt(0, 0, 0), kPiTest / 2, no_align);
   ASSERT_TRUE(plain.arrived);
-  EXPECT_NEAR(plain.final_pose.yaw, 0.0, 0.1);  // the goal yaw is ignored
+  EXPECT_NEAR(plain.final_pose.orientation.angle(), 0.0, 0.1);  // the goal yaw is ignored
 }
 
 TEST(PathFollower, GentleBendsAreDrivenThroughWithoutStopping) {
   // A grid-like path: 45-degree bends are not above the in-place threshold, so no stop.
-  const std::vector<Point2> path = {{0, 0}, {0.5, 0}, {1.0, 0.5}, {1.5, 0.5}};
-  const FollowRun run = follow(path, {0, 0, 0});
+  const std::vector<Vector2d> path = {{0, 0}, {0.5, 0}, {1.0, 0.5}, {1.5, 0.5}};
+  const FollowRun run = follow(path, poseAt(0, 0, 0));
   ASSERT_TRUE(run.arrived);
   EXPECT_EQ(run.rotating_in_place_steps, 0);
   EXPECT_LT(run.max_cross_track, 0.1);

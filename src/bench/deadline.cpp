@@ -20,6 +20,7 @@ struct DeadlineRun {
   MapKind kind = MapKind::kRooms;
   int size = 0;
   std::uint64_t seed = 0;
+  std::size_t limit_index = 0;  // in DeadlineOptions::limits_s: the report groups runs by it
   double limit_ms = 0.0;
   RunRecord record;
   double optimum = 0.0;
@@ -27,10 +28,11 @@ struct DeadlineRun {
 
 // One plan in a child process: EACI, default parameters, iterations enough to outlast any
 // limit, early stopping off, stopped by the wall clock.
-DeadlineRun runOne(const GeneratedMap& g, double limit_s, int threads) {
+DeadlineRun runOne(const GeneratedMap& g, const DeadlineOptions& options, std::size_t limit_index) {
+  const double limit_s = options.limits_s[limit_index];
   eaci::Parameters params;
   params.seed = g.seed;
-  params.threads = threads;
+  params.threads = options.threads;
   params.max_iterations = 1000000;
   params.early_stop_iterations = 0;
   const PlanRequest request{g.map.view(), g.start, g.goal, eaci::Algorithm::kEaci, params, limit_s * 1000.0};
@@ -41,6 +43,7 @@ DeadlineRun runOne(const GeneratedMap& g, double limit_s, int threads) {
   run.kind = g.kind;
   run.size = g.size;
   run.seed = g.seed;
+  run.limit_index = limit_index;
   run.limit_ms = limit_s * 1000.0;
   run.record = runRecordFromJson(nlohmann::json::parse(child.output));
   run.optimum = g.optimum;
@@ -64,12 +67,12 @@ std::string markdown(const DeadlineOptions& options, const Provenance& provenanc
                        "gap avg %", "set-up + 1st iteration ms"});
   for (MapKind kind : options.kinds)
     for (int size : options.sizes)
-      for (double limit : options.limits_s) {
+      for (std::size_t limit_index = 0; limit_index < options.limits_s.size(); ++limit_index) {
         std::vector<double> walls, firsts, gaps;
         double worst_over = -1e9, iterations = 0.0;
         int routes = 0, n = 0;
         for (const DeadlineRun& r : runs) {
-          if (r.kind != kind || r.size != size || r.limit_ms != limit * 1000.0) continue;
+          if (r.kind != kind || r.size != size || r.limit_index != limit_index) continue;
           ++n;
           walls.push_back(r.record.time_ms);
           firsts.push_back(r.record.first_iteration_ms);
@@ -81,7 +84,8 @@ std::string markdown(const DeadlineOptions& options, const Provenance& provenanc
           }
         }
         if (n == 0) continue;
-        table.addRow({std::string(toString(kind)) + " " + std::to_string(size), fixed(limit, 2), fixed(median(walls), 1),
+        table.addRow({std::string(toString(kind)) + " " + std::to_string(size), fixed(options.limits_s[limit_index], 2),
+                      fixed(median(walls), 1),
                       fixed(*std::max_element(walls.begin(), walls.end()), 1),
                       (worst_over >= 0 ? "+" : "") + fixed(worst_over, 1) + " %",
                       std::to_string(routes) + "/" + std::to_string(n), fixed(iterations / n, 0),
@@ -96,7 +100,7 @@ nlohmann::json toJson(const DeadlineOptions& options, const Provenance& provenan
   for (const DeadlineRun& r : runs)
     rows.push_back({{"kind", toString(r.kind)}, {"size", r.size}, {"seed", r.seed}, {"limit_ms", r.limit_ms},
                     {"optimum", r.optimum}, {"overshoot_pct", overshootPct(r)}, {"run", eaci_bench::toJson(r.record, false, false)}});
-  return {{"provenance", eaci_bench::toJson(provenance)}, {"threads", options.threads}, {"runs", rows}};
+  return {{"provenance", provenance}, {"threads", options.threads}, {"runs", rows}};
 }
 
 std::string csv(const std::vector<DeadlineRun>& runs) {
@@ -120,11 +124,11 @@ int runDeadlineCommand(const DeadlineOptions& options) {
     for (int size : options.sizes)
       for (int k = 1; k <= options.runs; ++k) {
         const GeneratedMap g = generateMap(kind, size, static_cast<std::uint64_t>(k));
-        for (double limit : options.limits_s) {
+        for (std::size_t limit_index = 0; limit_index < options.limits_s.size(); ++limit_index) {
           std::ostringstream label;
-          label << toString(kind) << " " << size << " | limit " << limit << " s";
+          label << toString(kind) << " " << size << " | limit " << options.limits_s[limit_index] << " s";
           progress.show(label.str(), k, options.runs);
-          runs.push_back(runOne(g, limit, options.threads));
+          runs.push_back(runOne(g, options, limit_index));
         }
       }
   progress.finish();

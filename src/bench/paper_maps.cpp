@@ -50,9 +50,4 @@ LoadedPaperMap loadPaperMap(const std::string& maps_dir, const PaperMap& spec) {
   return m;
 }
 
-nlohmann::json toJson(const PaperRow& r) {
-  return {{"avg_iterations", r.avg_iterations}, {"avg_length", r.avg_length}, {"best_length", r.best_length},
-          {"std_length", r.std_length},         {"avg_lost_ants", r.avg_lost_ants}, {"turn_deg", r.turn_deg}};
-}
-
 }  // namespace eaci_bench

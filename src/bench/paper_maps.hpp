@@ -24,6 +24,9 @@ struct PaperRow {
   double turn_deg = 0.0;  // total corner angle of the reported route
 };
 
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PaperRow, avg_iterations, avg_length, best_length, std_length, avg_lost_ants,
+                                   turn_deg)
+
 struct PaperMap {
   std::string file;                 // in the maps directory
   std::string name;                 // file without .txt
@@ -49,7 +52,5 @@ struct LoadedPaperMap {
 };
 
 LoadedPaperMap loadPaperMap(const std::string& maps_dir, const PaperMap& spec);
-
-nlohmann::json toJson(const PaperRow& row);
 
 }  // namespace eaci_bench

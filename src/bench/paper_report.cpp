@@ -3,7 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "parameters_json.hpp"
+#include "common/parameters_json.hpp"
+#include "grid_rows.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -21,17 +23,17 @@ nlohmann::json variantJson(const VariantResult& v) {
   for (const RunRecord& run : v.runs) runs.push_back(toJson(run, true, true));
   nlohmann::json settings = nlohmann::json::object();
   for (const auto& [key, value] : v.variant.settings) settings[key] = value;
-  return {{"key", v.variant.key},
+  return {{"key", toString(v.variant.key)},
           {"label", v.variant.label},
           {"island_strategy", v.variant.island_strategy},
           {"settings", settings},
-          {"summary", toJson(v.summary)},
+          {"summary", v.summary},
           {"runs", runs},
           {"pheromone_snapshots_seed", 1},
           {"pheromone_snapshots", snapshotsJson(v.snapshots)}};
 }
 
-nlohmann::json optionalRow(const std::optional<PaperRow>& row) { return row ? toJson(*row) : nlohmann::json(nullptr); }
+nlohmann::json optionalRow(const std::optional<PaperRow>& row) { return row ? nlohmann::json(*row) : nlohmann::json(nullptr); }
 
 nlohmann::json mapJson(const MapResult& m) {
   nlohmann::json variants = nlohmann::json::array();
@@ -42,12 +44,12 @@ nlohmann::json mapJson(const MapResult& m) {
           {"source", m.spec.note},
           {"width", m.map.width},
           {"height", m.map.height},
-          {"start", {m.start.row, m.start.col}},
-          {"goal", {m.goal.row, m.goal.col}},
+          {"start", m.start},
+          {"goal", m.goal},
           {"start_serial", m.spec.start_serial},
           {"goal_serial", m.spec.goal_serial},
           {"grid", gridRows(m.map)},
-          {"astar", toJson(m.astar, false, true)},
+          {toString(VariantKey::kAStar), toJson(m.astar, false, true)},
           {"paper", {{"aco", optionalRow(m.spec.paper_aco)}, {"eaci", optionalRow(m.spec.paper_eaci)}}},
           {"algorithms", variants}};
 }
@@ -60,13 +62,19 @@ std::string paperRowLabel(const Variant& v) { return v.algorithm == eaci::Algori
 
 // ---------------------------------------------------------------- Markdown
 
+// The parameters of a paper variant (seed and threads do not matter here).
+eaci::Parameters variantParameters(VariantKey key) { return paperParameters(paperVariant(key), 1, 1); }
+
 std::string settingsParagraph(const PaperOptions& options) {
+  const eaci::Parameters aco = variantParameters(VariantKey::kAco);
   std::ostringstream s;
-  s << "Corner cutting allowed (the paper's move rule); the paper's comparison parameters m = 50, "
-       "Nc_max = 100, α = 1.1, β = 7, Q = 100, κ = 0.9, λ = 3, N = 9, ε = 0.5; classic ACO with "
-       "τ0 = 800 and ρ = 0.1 (our defaults; the paper gives neither: weak deposits, as in the common "
-       "MATLAB ACO code's τ0 = 8 with Q = 1, chosen by `eaci_bench sweep`), and with τ0 = 1, ρ = 0.3 "
-       "(strong deposits, for contrast); seeds 1–"
+  s << "Corner cutting allowed (the paper's move rule); the paper's comparison parameters "
+    << symbolValues(aco, {"ants", "max_iterations", "alpha", "beta", "q", "kappa", "lambda", "islands", "epsilon"})
+    << "; classic ACO with " << symbolValues(aco, {"aco_tau0"}) << " and " << symbolValues(aco, {"aco_rho"})
+    << " (our defaults; the paper gives neither: weak deposits, as in the common MATLAB ACO code's τ0 = 8 with "
+       "Q = 1, chosen by `eaci_bench sweep`), and with "
+    << symbolValues(variantParameters(VariantKey::kAcoStrong), {"aco_tau0", "aco_rho"})
+    << " (strong deposits, for contrast); seeds 1–"
     << options.runs << "; " << options.threads
     << " thread(s) per plan. *iterations*: the iteration that first reached the run's final length "
        "(the paper's \"average iterative times\"); *lost ants*: total over the run; *std*: sample "
@@ -121,25 +129,26 @@ std::string mapTable(const MapResult& m) {
   return s.str();
 }
 
-const VariantResult* findVariant(const MapResult& m, const std::string& key) {
+const VariantResult* findVariant(const MapResult& m, VariantKey key) {
   for (const VariantResult& v : m.variants)
     if (v.variant.key == key) return &v;
   return nullptr;
 }
 
 std::string ratioTable(const std::vector<MapResult>& results) {
-  MarkdownTable table({"map", "ACO iterations", "ACO lost ants", "ACO τ0 1 ρ 0.3 iterations",
-                       "ACO τ0 1 ρ 0.3 lost ants", "EACI-paper iterations", "EACI-paper lost ants",
+  const std::string strong = "ACO " + symbolValues(variantParameters(VariantKey::kAcoStrong), {"aco_tau0", "aco_rho"}, " ", " ");
+  MarkdownTable table({"map", "ACO iterations", "ACO lost ants", strong + " iterations",
+                       strong + " lost ants", "EACI-paper iterations", "EACI-paper lost ants",
                        "EACI-paper best length", "EACI-paper angle", "EACI-geodesic optimal",
                        "EACI-geodesic iterations", "EACI-geodesic lost ants"});
   for (const MapResult& m : results) {
     if (!m.spec.paper_aco || !m.spec.paper_eaci) continue;
     const PaperRow& aco = *m.spec.paper_aco;
     const PaperRow& eaci = *m.spec.paper_eaci;
-    const Summary& a = findVariant(m, "aco")->summary;
-    const Summary& w = findVariant(m, "aco-strong")->summary;
-    const Summary& p = findVariant(m, "eaci-paper")->summary;
-    const Summary& g = findVariant(m, "eaci-geodesic")->summary;
+    const Summary& a = findVariant(m, VariantKey::kAco)->summary;
+    const Summary& w = findVariant(m, VariantKey::kAcoStrong)->summary;
+    const Summary& p = findVariant(m, VariantKey::kEaciPaper)->summary;
+    const Summary& g = findVariant(m, VariantKey::kEaciGeodesic)->summary;
     table.addRow({m.spec.name, ratio(a.avg_iterations, aco.avg_iterations), ratio(a.avg_lost_ants, aco.avg_lost_ants),
                   ratio(w.avg_iterations, aco.avg_iterations), ratio(w.avg_lost_ants, aco.avg_lost_ants),
                   ratio(p.avg_iterations, eaci.avg_iterations), ratio(p.avg_lost_ants, eaci.avg_lost_ants),
@@ -156,7 +165,7 @@ std::string timingTable(const std::vector<MapResult>& results) {
   MarkdownTable table({"map", "planner", "wall ms/run", "CPU ms/run", "wall ms to final route",
                        "to final route ÷ EACI-geodesic's"});
   for (const MapResult& m : results) {
-    const Summary& g = findVariant(m, "eaci-geodesic")->summary;
+    const Summary& g = findVariant(m, VariantKey::kEaciGeodesic)->summary;
     table.addRow({m.spec.name, "A*", fixed(m.astar.time_ms, 3), fixed(m.astar.cpu_ms, 3), fixed(m.astar.time_ms, 3),
                   ratio(m.astar.time_ms, g.median_time_to_best_ms)});
     for (const VariantResult& v : m.variants) {
@@ -175,12 +184,12 @@ nlohmann::json paperJson(const std::vector<MapResult>& results, const PaperOptio
   nlohmann::json maps = nlohmann::json::array();
   for (const MapResult& m : results) maps.push_back(mapJson(m));
   return {{"kind", "paper"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"runs", options.runs},
             {"threads", options.threads},
             {"snapshot_iterations", options.snapshot_iterations},
-            {"parameters", toJson(paperParameters(paperVariants().front(), 1, options.threads))}}},
+            {"parameters", eaci::report::parametersToJson(paperParameters(paperVariants().front(), 1, options.threads))}}},
           {"maps", maps}};
 }
 
@@ -191,7 +200,8 @@ std::string paperSummaryCsv(const std::vector<MapResult>& results) {
                 "paper_avg_iterations", "paper_avg_length", "paper_best_length", "paper_avg_lost_ants",
                 "paper_turn_deg"});
   for (const MapResult& m : results) {
-    csv.addRow({m.spec.name, "astar", "1", m.astar.success ? "1" : "0", m.astar.success ? "1" : "0", "1", "0",
+    const char* astar_success = m.astar.success ? "1" : "0";
+    csv.addRow({m.spec.name, toString(VariantKey::kAStar), "1", astar_success, astar_success, "1", "0",
                 csvNumber(m.astar.length), csvNumber(m.astar.length), "0", "0", csvNumber(m.astar.total_turn_deg),
                 csvNumber(m.astar.time_ms), csvNumber(m.astar.time_ms), csvNumber(m.astar.time_ms),
                 csvNumber(m.astar.time_ms), "0", "0",
@@ -200,7 +210,7 @@ std::string paperSummaryCsv(const std::vector<MapResult>& results) {
       const Summary& s = v.summary;
       const auto& paper = paperRowFor(m, v.variant);
       auto p = [&](double PaperRow::*field) { return paper ? csvNumber((*paper).*field) : std::string(); };
-      csv.addRow({m.spec.name, v.variant.key, std::to_string(s.runs), std::to_string(s.successes),
+      csv.addRow({m.spec.name, toString(v.variant.key), std::to_string(s.runs), std::to_string(s.successes),
                   csvNumber(s.success_rate), std::to_string(s.optimal_runs), csvNumber(s.avg_iterations),
                   csvNumber(s.avg_length), csvNumber(s.best_length), csvNumber(s.std_length),
                   csvNumber(s.avg_lost_ants), csvNumber(s.best_route_turn_deg), csvNumber(s.avg_time_ms),
@@ -220,7 +230,7 @@ std::string paperRunsCsv(const std::vector<MapResult>& results) {
   for (const MapResult& m : results)
     for (const VariantResult& v : m.variants)
       for (const RunRecord& r : v.runs)
-        csv.addRow({m.spec.name, v.variant.key, std::to_string(r.seed), r.success ? "1" : "0", csvNumber(r.length),
+        csv.addRow({m.spec.name, toString(v.variant.key), std::to_string(r.seed), r.success ? "1" : "0", csvNumber(r.length),
                     std::to_string(r.iterations_to_converge), std::to_string(r.iterations_run),
                     std::to_string(r.lost_ants_total), csvNumber(r.total_turn_deg), csvNumber(r.time_ms),
                     csvNumber(r.time_to_best_ms)});

@@ -1,8 +1,10 @@
 #include "paper_tables.hpp"
 
 #include <iostream>
+#include <stdexcept>
 
 #include "paper_report.hpp"
+#include "parameter_symbols.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "report_format.hpp"
@@ -11,11 +13,19 @@ namespace eaci_bench {
 
 namespace {
 
+// Strong deposits (tau0 = 1, rho = 0.3, our defaults before 2026-11-22): the contrast. Its
+// label names the settings.
+Variant strongAco() {
+  Variant v{VariantKey::kAcoStrong, "", eaci::Algorithm::kAco, "", {{"aco_tau0", "1"}, {"aco_rho", "0.3"}}};
+  v.label = "classic ACO, " + symbolValues(paperParameters(v, 1, 1), {"aco_tau0", "aco_rho"});
+  return v;
+}
+
 VariantResult runVariant(const MapResult& m, const Variant& variant, const PaperOptions& options,
                          Progress& progress) {
   VariantResult result;
   result.variant = variant;
-  const std::string stage = m.spec.name + " | " + variant.key;
+  const std::string stage = m.spec.name + " | " + toString(variant.key);
   for (int k = 1; k <= options.runs; ++k) {
     progress.show(stage, k, options.runs);
     const eaci::Parameters params = paperParameters(variant, static_cast<std::uint64_t>(k), options.threads);
@@ -55,18 +65,22 @@ const std::vector<Variant>& paperVariants() {
   static const std::vector<Variant> variants = {
       // Our defaults tau0 = 800, rho = 0.1: weak deposits against the initial pheromone, like the
       // common MATLAB ACO code (tau0 = 8, Q = 1); `eaci_bench sweep` shows why.
-      {"aco", "classic ACO", eaci::Algorithm::kAco, "", {}},
-      // Strong deposits (tau0 = 1, rho = 0.3, our defaults before 2026-11-22): the contrast.
-      {"aco-strong", "classic ACO, τ0 = 1, ρ = 0.3", eaci::Algorithm::kAco, "",
-       {{"aco_tau0", "1"}, {"aco_rho", "0.3"}}},
-      {"eaci-paper", "EACI, paper islands", eaci::Algorithm::kEaci, "paper", {}},
-      {"eaci-geodesic", "EACI, geodesic islands", eaci::Algorithm::kEaci, "geodesic", {}},
+      {VariantKey::kAco, "classic ACO", eaci::Algorithm::kAco, "", {}},
+      strongAco(),
+      {VariantKey::kEaciPaper, "EACI, paper islands", eaci::Algorithm::kEaci, "paper", {}},
+      {VariantKey::kEaciGeodesic, "EACI, geodesic islands", eaci::Algorithm::kEaci, "geodesic", {}},
   };
   return variants;
 }
 
+const Variant& paperVariant(VariantKey key) {
+  for (const Variant& v : paperVariants())
+    if (v.key == key) return v;
+  throw std::invalid_argument(std::string("no paper variant '") + toString(key) + "'");
+}
+
 eaci::Parameters paperParameters(const Variant& variant, std::uint64_t seed, int threads) {
-  eaci::Parameters params;  // m = 50, Nc_max = 100, alpha 1.1, beta 7, Q 100, kappa 0.9, lambda 3, N 9, epsilon 0.5
+  eaci::Parameters params;  // the defaults are the paper's comparison parameters
   eaci::setParameter(params, "allow_corner_cutting", "true");
   if (!variant.island_strategy.empty()) eaci::setParameter(params, "island_strategy", variant.island_strategy);
   for (const auto& [key, value] : variant.settings) eaci::setParameter(params, key, value);

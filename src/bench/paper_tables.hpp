@@ -12,6 +12,7 @@
 #include "plan_runner.hpp"
 #include "run_record.hpp"
 #include "statistics.hpp"
+#include "variant_key.hpp"
 
 namespace eaci_bench {
 
@@ -26,7 +27,7 @@ struct PaperOptions {
 
 // One algorithm as the paper benchmark runs it.
 struct Variant {
-  std::string key;              // "aco", "aco-paperlike", "eaci-paper", "eaci-geodesic"
+  VariantKey key = VariantKey::kAco;
   std::string label;            // for tables and plots
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
   std::string island_strategy;  // "" for ACO
@@ -34,6 +35,7 @@ struct Variant {
 };
 
 const std::vector<Variant>& paperVariants();
+const Variant& paperVariant(VariantKey key);  // throws std::invalid_argument
 
 struct VariantResult {
   Variant variant;

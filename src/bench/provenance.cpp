@@ -1,35 +1,15 @@
 #include "provenance.hpp"
 
-#include <cstdio>
 #include <ctime>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
+#include "source_state.hpp"  // generated at build time (cmake/source_state.cmake)
+
 namespace eaci_bench {
 
 namespace {
-
-// The repository this file was compiled from: two levels above src/bench/.
-std::string sourceRoot() {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
-}
-
-std::string runCommand(const std::string& command) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
-  pclose(pipe);
-  return out;
-}
-
-std::string firstLine(const std::string& text) {
-  const std::string line = text.substr(0, text.find('\n'));
-  return line;
-}
 
 std::string cpuModel() {
   std::ifstream in("/proc/cpuinfo");
@@ -75,12 +55,9 @@ std::string compilerName() {
 
 Provenance collectProvenance(const std::string& command_line) {
   Provenance p;
-  const std::string git = "git -C '" + sourceRoot() + "' ";
-  p.git_commit = firstLine(runCommand(git + "log -1 --format=%h 2>/dev/null"));
-  if (p.git_commit.empty()) p.git_commit = "unknown";
-  std::istringstream modified(runCommand(git + "status --porcelain -- include src/io 2>/dev/null"));
-  for (std::string line; std::getline(modified, line);)
-    if (line.size() > 3) p.modified_sources.push_back(line.substr(3));
+  p.git_commit = source_state::kCommit;
+  p.git_dirty = source_state::kDirty;
+  p.modified_solver_sources = source_state::kModifiedSolverSources;
   p.compiler = compilerName();
 #ifdef NDEBUG
   p.build_type = "optimised (NDEBUG)";
@@ -91,30 +68,23 @@ Provenance collectProvenance(const std::string& command_line) {
   p.hardware_threads = std::thread::hardware_concurrency();
   p.memory_gb = memoryGb();
   p.date_utc = utcNow();
-  p.load_average = loadAverage();
+  p.load_average_at_start = loadAverage();
   p.command_line = command_line;
   return p;
-}
-
-nlohmann::json toJson(const Provenance& p) {
-  return {{"git_commit", p.git_commit},         {"modified_solver_sources", p.modified_sources},
-          {"compiler", p.compiler},             {"build_type", p.build_type},
-          {"cpu_model", p.cpu_model},           {"hardware_threads", p.hardware_threads},
-          {"memory_gb", p.memory_gb},           {"date_utc", p.date_utc},
-          {"load_average_at_start", p.load_average},
-          {"command_line", p.command_line}};
 }
 
 std::string provenanceMarkdown(const Provenance& p) {
   std::ostringstream s;
   s << "Source `" << p.git_commit << "`";
-  if (!p.modified_sources.empty()) {
+  if (!p.modified_solver_sources.empty()) {
     s << " with uncommitted changes to";
-    for (const std::string& f : p.modified_sources) s << " `" << f << "`";
+    for (const std::string& f : p.modified_solver_sources) s << " `" << f << "`";
+  } else if (p.git_dirty) {
+    s << " with uncommitted changes outside the solver sources";
   }
   s << "; " << p.compiler << ", " << p.build_type << "; " << p.cpu_model << ", " << p.hardware_threads
     << " hardware threads, " << static_cast<int>(p.memory_gb + 0.5) << " GB; " << p.date_utc
-    << "; load average " << p.load_average << " when the run began.\n\n"
+    << "; load average " << p.load_average_at_start << " when the run began.\n\n"
     << "Command: `" << p.command_line << "`\n";
   return s.str();
 }

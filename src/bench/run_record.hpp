@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/cell_json.hpp"
 #include "eaci/grid/cell.hpp"
 
 namespace eaci_bench {
@@ -33,12 +34,16 @@ struct RunRecord {
   std::vector<eaci::Cell> islands;
 };
 
-// [[row, col], ...]
-nlohmann::json cellsToJson(const std::vector<eaci::Cell>& cells);
-std::vector<eaci::Cell> cellsFromJson(const nlohmann::json& j);
+// Every field under its own name (cells as [row, col]); a non-finite number comes out as null.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RunRecord, seed, success, length, total_turn_deg,
+                                                iterations_to_converge, iterations_run, lost_ants_total,
+                                                stopped_early, interrupted, time_ms, cpu_ms, time_to_best_ms,
+                                                first_iteration_ms, best_length_so_far, iteration_best_length,
+                                                lost_ants_per_iteration, iteration_end_ms, path, islands)
 
-// Every field; the per-iteration curves and the cells only when asked (they dominate the size).
+// The per-iteration curves and the cells only when asked (they dominate the size).
 nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path);
-RunRecord runRecordFromJson(const nlohmann::json& j);
+// Reads toJson's output back (null as +infinity; fields it left out keep their defaults).
+RunRecord runRecordFromJson(nlohmann::json j);
 
 }  // namespace eaci_bench

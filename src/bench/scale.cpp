@@ -35,7 +35,7 @@ ScaleRun runOne(const GeneratedMap& g, const ScaleVariant& v, std::uint64_t seed
   const PlanRequest request{g.map.view(), g.start, g.goal, v.algorithm, scaleParameters(v, seed),
                             v.algorithm == eaci::Algorithm::kAStar ? 0.0 : budget_ms};
   const ForkedResult child = runForked([&] { return toJson(timedPlan(request), false, keep_path).dump(); });
-  if (!child.ok) throw std::runtime_error(v.key + " on " + toString(g.kind) + " " + std::to_string(g.size) + ": " +
+  if (!child.ok) throw std::runtime_error(std::string(toString(v.key)) + " on " + toString(g.kind) + " " + std::to_string(g.size) + ": " +
                                           child.error);
   ScaleRun run;
   run.record = runRecordFromJson(nlohmann::json::parse(child.output));
@@ -80,7 +80,7 @@ class ScaleRunner {
     c.kind = kind;
     const std::vector<ScaleVariant> variants = scaleVariants(options_.early_stop_iterations);
     for (const ScaleVariant& v : variants) c.variants.push_back(ScaleVariantResult{v, {}, {}, 0, 0, 0, 0, 0});
-    std::set<std::string> skip;
+    std::set<VariantKey> skip;
     for (const ScaleVariant& v : variants)
       if (given_up_.count(givenUpKey(kind, v))) {
         skip.insert(v.key);
@@ -96,7 +96,7 @@ class ScaleRunner {
           ++c.variants[i].skipped_seeds;
           continue;
         }
-        progress_.show(std::string(toString(kind)) + " " + std::to_string(size) + " | " + v.key, k, seeds);
+        progress_.show(std::string(toString(kind)) + " " + std::to_string(size) + " | " + toString(v.key), k, seeds);
         c.variants[i].runs.push_back(runOne(g, v, static_cast<std::uint64_t>(k), options_.budget_s * 1000.0, example));
         checkSlow(c, v, c.variants[i].runs.back().record, k, seeds, skip);
       }
@@ -110,7 +110,7 @@ class ScaleRunner {
   // A run stopped by the budget: this variant is dropped for the rest of this case and for
   // larger maps of the same kind. A slow run: the rest of this case's seeds are dropped.
   void checkSlow(ScaleCase& c, const ScaleVariant& v, const RunRecord& r, int k, int seeds,
-                 std::set<std::string>& skip) {
+                 std::set<VariantKey>& skip) {
     if (r.interrupted) {
       std::ostringstream why;
       why << "a run on " << toString(c.kind) << " " << c.size << " (seed " << k << ") hit the "
@@ -130,7 +130,7 @@ class ScaleRunner {
     progress_.note(std::string(toString(c.kind)) + " " + std::to_string(c.size) + ": " + note);
   }
 
-  static std::string givenUpKey(MapKind kind, const ScaleVariant& v) { return std::string(toString(kind)) + "/" + v.key; }
+  static std::string givenUpKey(MapKind kind, const ScaleVariant& v) { return std::string(toString(kind)) + "/" + toString(v.key); }
 
   const ScaleOptions& options_;
   Progress progress_;
@@ -142,13 +142,13 @@ class ScaleRunner {
 std::vector<ScaleVariant> scaleVariants(int early_stop_iterations) {
   const std::string early = "EACI, early stop " + std::to_string(early_stop_iterations);
   return {
-      {"astar", "A*", eaci::Algorithm::kAStar, 1, 0},
-      {"eaci-1t", "EACI, 1 thread", eaci::Algorithm::kEaci, 1, 0},
-      {"eaci-all", "EACI, all cores", eaci::Algorithm::kEaci, 0, 0},
-      {"eaci-early-1t", early + ", 1 thread", eaci::Algorithm::kEaci, 1, early_stop_iterations},
-      {"eaci-early-all", early + ", all cores", eaci::Algorithm::kEaci, 0, early_stop_iterations},
-      {"aco-1t", "classic ACO, 1 thread", eaci::Algorithm::kAco, 1, 0},
-      {"aco-all", "classic ACO, all cores", eaci::Algorithm::kAco, 0, 0},
+      {VariantKey::kAStar, "A*", eaci::Algorithm::kAStar, 1, 0},
+      {VariantKey::kEaci1t, "EACI, 1 thread", eaci::Algorithm::kEaci, 1, 0},
+      {VariantKey::kEaciAll, "EACI, all cores", eaci::Algorithm::kEaci, 0, 0},
+      {VariantKey::kEaciEarly1t, early + ", 1 thread", eaci::Algorithm::kEaci, 1, early_stop_iterations},
+      {VariantKey::kEaciEarlyAll, early + ", all cores", eaci::Algorithm::kEaci, 0, early_stop_iterations},
+      {VariantKey::kAco1t, "classic ACO, 1 thread", eaci::Algorithm::kAco, 1, 0},
+      {VariantKey::kAcoAll, "classic ACO, all cores", eaci::Algorithm::kAco, 0, 0},
   };
 }
 

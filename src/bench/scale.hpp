@@ -11,6 +11,7 @@
 #include "map_generator.hpp"
 #include "run_record.hpp"
 #include "statistics.hpp"
+#include "variant_key.hpp"
 
 namespace eaci_bench {
 
@@ -27,7 +28,7 @@ struct ScaleOptions {
 };
 
 struct ScaleVariant {
-  std::string key;
+  VariantKey key = VariantKey::kEaci1t;
   std::string label;
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
   int threads = 1;              // 0 = all cores

@@ -4,7 +4,10 @@
 #include <limits>
 #include <sstream>
 
-#include "parameters_json.hpp"
+#include "common/json_number.hpp"
+#include "common/parameters_json.hpp"
+#include "grid_rows.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
 
 namespace eaci_bench {
@@ -13,7 +16,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-const ScaleVariantResult* findVariant(const ScaleCase& c, const std::string& key) {
+const ScaleVariantResult* findVariant(const ScaleCase& c, VariantKey key) {
   for (const ScaleVariantResult& v : c.variants)
     if (v.variant.key == key) return &v;
   return nullptr;
@@ -41,7 +44,7 @@ double avgOptimum(const ScaleCase& c) {
 }
 
 // "12.3" or "—" when the variant did not run; "*" marks fewer runs than seeds.
-std::string timeCell(const ScaleCase& c, const std::string& key) {
+std::string timeCell(const ScaleCase& c, VariantKey key) {
   const ScaleVariantResult* v = findVariant(c, key);
   if (v == nullptr || v->runs.empty()) return "—";
   std::string text = fixed(v->summary.median_time_ms, v->summary.median_time_ms < 10 ? 2 : 0);
@@ -50,7 +53,7 @@ std::string timeCell(const ScaleCase& c, const std::string& key) {
   return text;
 }
 
-std::string memoryCell(const ScaleCase& c, const std::string& key) {
+std::string memoryCell(const ScaleCase& c, VariantKey key) {
   const ScaleVariantResult* v = findVariant(c, key);
   if (v == nullptr || v->runs.empty()) return "—";
   return fixed(v->max_peak_rss_mb, 1) + " (" + fixed(v->max_plan_rss_mb, 1) + ")";
@@ -78,9 +81,9 @@ std::string timeTable(const std::vector<ScaleCase>& cases) {
                        "EACI early stop, 1 thread", "EACI early stop, all cores", "ACO 1 thread", "ACO all cores"});
   for (const ScaleCase& c : cases)
     table.addRow({caseName(c), std::to_string(c.maps.size()), fixed(avgObstacleFraction(c) * 100, 0) + " %",
-                  fixed(avgOptimum(c), 1), timeCell(c, "astar"), timeCell(c, "eaci-1t"), timeCell(c, "eaci-all"),
-                  timeCell(c, "eaci-early-1t"), timeCell(c, "eaci-early-all"), timeCell(c, "aco-1t"),
-                  timeCell(c, "aco-all")});
+                  fixed(avgOptimum(c), 1), timeCell(c, VariantKey::kAStar), timeCell(c, VariantKey::kEaci1t), timeCell(c, VariantKey::kEaciAll),
+                  timeCell(c, VariantKey::kEaciEarly1t), timeCell(c, VariantKey::kEaciEarlyAll), timeCell(c, VariantKey::kAco1t),
+                  timeCell(c, VariantKey::kAcoAll)});
   return table.render();
 }
 
@@ -88,8 +91,8 @@ std::string memoryTable(const std::vector<ScaleCase>& cases) {
   MarkdownTable table({"map", "A*", "EACI 1 thread", "EACI all cores", "EACI early stop, 1 thread", "ACO 1 thread",
                        "ACO all cores"});
   for (const ScaleCase& c : cases)
-    table.addRow({caseName(c), memoryCell(c, "astar"), memoryCell(c, "eaci-1t"), memoryCell(c, "eaci-all"),
-                  memoryCell(c, "eaci-early-1t"), memoryCell(c, "aco-1t"), memoryCell(c, "aco-all")});
+    table.addRow({caseName(c), memoryCell(c, VariantKey::kAStar), memoryCell(c, VariantKey::kEaci1t), memoryCell(c, VariantKey::kEaciAll),
+                  memoryCell(c, VariantKey::kEaciEarly1t), memoryCell(c, VariantKey::kAco1t), memoryCell(c, VariantKey::kAcoAll)});
   return table.render();
 }
 
@@ -97,8 +100,8 @@ std::string qualityTable(const std::vector<ScaleCase>& cases) {
   MarkdownTable table({"map", "EACI success", "EACI gap avg / max %", "EACI iterations", "EACI lost ants",
                        "ACO success", "ACO gap avg / max %", "ACO iterations", "ACO lost ants"});
   for (const ScaleCase& c : cases) {
-    const ScaleVariantResult* e = findVariant(c, "eaci-1t");
-    const ScaleVariantResult* a = findVariant(c, "aco-1t");
+    const ScaleVariantResult* e = findVariant(c, VariantKey::kEaci1t);
+    const ScaleVariantResult* a = findVariant(c, VariantKey::kAco1t);
     table.addRow({caseName(c), successCell(e), gapCell(e), numberCell(e, &Summary::avg_iterations, 1),
                   numberCell(e, &Summary::avg_lost_ants, 1), successCell(a), gapCell(a),
                   numberCell(a, &Summary::avg_iterations, 1), numberCell(a, &Summary::avg_lost_ants, 0)});
@@ -110,7 +113,7 @@ std::string earlyStopTable(const std::vector<ScaleCase>& cases, int early_stop_i
   MarkdownTable table({"map", "A* ms", "EACI full ms", "EACI early-stop ms", "time saved", "length cost",
                        "early-stop gap to A*", "iterations run", "early stop ÷ A*", "set-up + 1st iteration ms"});
   for (const ScaleCase& c : cases) {
-    const EarlyStopComparison e = compareEarlyStop(c, "eaci-1t", "eaci-early-1t");
+    const EarlyStopComparison e = compareEarlyStop(c, VariantKey::kEaci1t, VariantKey::kEaciEarly1t);
     if (e.seeds == 0) continue;
     table.addRow({caseName(c), fixed(e.astar_ms, 2), fixed(e.full_ms, 1), fixed(e.early_ms, 1),
                   fixed(e.time_saved_pct, 0) + " %", fixed(e.length_cost_pct, 2) + " %",
@@ -121,7 +124,8 @@ std::string earlyStopTable(const std::vector<ScaleCase>& cases, int early_stop_i
   s << "One thread; early stop after " << early_stop_iterations
     << " iterations without improvement; wall times are means over the seeds; *length cost*: "
        "early-stopped route over the full run's route, same seed; *set-up + 1st iteration*: wall time "
-       "until the first iteration ended (islands, distance fields, initial pheromone, 50 ants).\n\n"
+       "until the first iteration ended (islands, distance fields, initial pheromone, "
+    << eaci::Parameters{}.ants << " ants).\n\n"
     << table.render();
   return s.str();
 }
@@ -136,7 +140,7 @@ std::string notesList(const std::vector<ScaleCase>& cases) {
 nlohmann::json runJson(const ScaleRun& run) {
   nlohmann::json j = toJson(run.record, false, false);
   j["optimum"] = run.optimum;
-  j["gap_pct"] = std::isfinite(run.gap_pct) ? nlohmann::json(run.gap_pct) : nlohmann::json(nullptr);
+  j["gap_pct"] = eaci::report::finiteOrNull(run.gap_pct);
   j["peak_rss_mb"] = run.peak_rss_mb;
   j["plan_rss_mb"] = run.plan_rss_mb;
   return j;
@@ -145,31 +149,18 @@ nlohmann::json runJson(const ScaleRun& run) {
 nlohmann::json variantJson(const ScaleVariantResult& v) {
   nlohmann::json runs = nlohmann::json::array();
   for (const ScaleRun& run : v.runs) runs.push_back(runJson(run));
-  auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  return {{"key", v.variant.key},
+  return {{"key", toString(v.variant.key)},
           {"label", v.variant.label},
           {"algorithm", eaci::toString(v.variant.algorithm)},
           {"threads", v.variant.threads},
           {"early_stop_iterations", v.variant.early_stop_iterations},
-          {"summary", toJson(v.summary)},
-          {"avg_gap_pct", number(v.avg_gap_pct)},
-          {"max_gap_pct", number(v.max_gap_pct)},
+          {"summary", v.summary},
+          {"avg_gap_pct", eaci::report::finiteOrNull(v.avg_gap_pct)},
+          {"max_gap_pct", eaci::report::finiteOrNull(v.max_gap_pct)},
           {"max_peak_rss_mb", v.max_peak_rss_mb},
           {"max_plan_rss_mb", v.max_plan_rss_mb},
           {"skipped_seeds", v.skipped_seeds},
           {"runs", runs}};
-}
-
-nlohmann::json earlyStopJson(const EarlyStopComparison& e) {
-  return {{"seeds", e.seeds},
-          {"full_ms", e.full_ms},
-          {"early_ms", e.early_ms},
-          {"astar_ms", e.astar_ms},
-          {"time_saved_pct", e.time_saved_pct},
-          {"length_cost_pct", e.length_cost_pct},
-          {"early_gap_pct", e.early_gap_pct},
-          {"early_iterations", e.early_iterations},
-          {"first_iteration_ms", e.first_iteration_ms}};
 }
 
 nlohmann::json caseJson(const ScaleCase& c) {
@@ -183,8 +174,8 @@ nlohmann::json caseJson(const ScaleCase& c) {
           {"kind", toString(c.kind)},
           {"maps", maps},
           {"variants", variants},
-          {"early_stop", earlyStopJson(compareEarlyStop(c, "eaci-1t", "eaci-early-1t"))},
-          {"early_stop_all_cores", earlyStopJson(compareEarlyStop(c, "eaci-all", "eaci-early-all"))},
+          {"early_stop", compareEarlyStop(c, VariantKey::kEaci1t, VariantKey::kEaciEarly1t)},
+          {"early_stop_all_cores", compareEarlyStop(c, VariantKey::kEaciAll, VariantKey::kEaciEarlyAll)},
           {"notes", c.notes}};
 }
 
@@ -194,20 +185,20 @@ nlohmann::json exampleJson(const ScaleCase& c) {
   nlohmann::json routes = nlohmann::json::object();
   for (const ScaleVariantResult& v : c.variants) {
     const ScaleRun* run = runWithSeed(&v, 1);
-    if (run != nullptr && !run->record.path.empty()) routes[v.variant.key] = cellsToJson(run->record.path);
+    if (run != nullptr && !run->record.path.empty()) routes[toString(v.variant.key)] = run->record.path;
   }
   return {{"size", c.size},      {"kind", toString(c.kind)},      {"seed", g.seed_used},
-          {"grid", gridRows(g.map)}, {"start", {g.start.row, g.start.col}}, {"goal", {g.goal.row, g.goal.col}},
+          {"grid", gridRows(g.map)}, {"start", g.start}, {"goal", g.goal},
           {"optimum", g.optimum}, {"routes", routes}};
 }
 
 }  // namespace
 
-EarlyStopComparison compareEarlyStop(const ScaleCase& c, const std::string& full_key, const std::string& early_key) {
+EarlyStopComparison compareEarlyStop(const ScaleCase& c, VariantKey full_key, VariantKey early_key) {
   EarlyStopComparison e;
   const ScaleVariantResult* full = findVariant(c, full_key);
   const ScaleVariantResult* early = findVariant(c, early_key);
-  const ScaleVariantResult* astar = findVariant(c, "astar");
+  const ScaleVariantResult* astar = findVariant(c, VariantKey::kAStar);
   if (early == nullptr) return e;
   double cost = 0.0, gap = 0.0, iterations = 0.0;
   for (const ScaleRun& run : early->runs) {
@@ -246,7 +237,7 @@ nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions
   std::vector<std::string> kinds;
   for (MapKind k : options.kinds) kinds.push_back(toString(k));
   return {{"kind", "scale"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"sizes", options.sizes},
             {"kinds", kinds},
@@ -254,7 +245,7 @@ nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions
             {"budget_s", options.budget_s},
             {"slow_run_s", options.slow_run_s},
             {"early_stop_iterations", options.early_stop_iterations},
-            {"parameters", toJson(eaci::Parameters{})}}},
+            {"parameters", eaci::report::parametersToJson(eaci::Parameters{})}}},
           {"cases", out_cases},
           {"examples", examples}};
 }
@@ -267,7 +258,7 @@ std::string scaleCsv(const std::vector<ScaleCase>& cases) {
   for (const ScaleCase& c : cases)
     for (const ScaleVariantResult& v : c.variants) {
       const Summary& s = v.summary;
-      csv.addRow({toString(c.kind), std::to_string(c.size), v.variant.key, std::to_string(v.variant.threads),
+      csv.addRow({toString(c.kind), std::to_string(c.size), toString(v.variant.key), std::to_string(v.variant.threads),
                   std::to_string(v.variant.early_stop_iterations), std::to_string(s.runs),
                   std::to_string(v.skipped_seeds), std::to_string(s.successes), std::to_string(s.interrupted_runs),
                   csvNumber(s.avg_time_ms), csvNumber(s.median_time_ms), csvNumber(s.median_cpu_ms),
@@ -286,8 +277,10 @@ std::string scaleMarkdown(const std::vector<ScaleCase>& cases, const ScaleOption
     << provenanceMarkdown(provenance) << "\n"
     << "Rooms (rooms 10–20 cells, 1-cell walls, a 2–3-cell door into each neighbour) and clutter "
        "(rectangular blocks over 20–30 % of the map) maps, start at the top-left corner, goal at the "
-       "bottom-right; corner cutting forbidden; default parameters (geodesic islands, m = 50, "
-       "Nc_max = 100). Each plan runs in its own child process. Colony runs stop after "
+       "bottom-right; corner cutting forbidden; default parameters ("
+    << eaci::toString(eaci::Parameters{}.island_strategy) << " islands, "
+    << symbolValues(eaci::Parameters{}, {"ants", "max_iterations"})
+    << "). Each plan runs in its own child process. Colony runs stop after "
     << options.budget_s << " s (marked *capped*); a planner whose run takes over " << options.slow_run_s
     << " s runs for the first seed only (marked *1 run*).\n\n"
     << "### Time per plan (ms of wall time, median over the seeds)\n\n"

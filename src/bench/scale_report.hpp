@@ -25,7 +25,10 @@ struct EarlyStopComparison {
   double first_iteration_ms = 0.0;  // set-up and the first iteration (mean over the early-stopped runs)
 };
 
-EarlyStopComparison compareEarlyStop(const ScaleCase& c, const std::string& full_key, const std::string& early_key);
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EarlyStopComparison, seeds, full_ms, early_ms, astar_ms, time_saved_pct,
+                                   length_cost_pct, early_gap_pct, early_iterations, first_iteration_ms)
+
+EarlyStopComparison compareEarlyStop(const ScaleCase& c, VariantKey full_key, VariantKey early_key);
 
 nlohmann::json scaleJson(const std::vector<ScaleCase>& cases, const ScaleOptions& options,
                          const Provenance& provenance);

@@ -92,43 +92,13 @@ Summary summarize(const std::vector<RunRecord>& runs, double optimum) {
   s.median_cpu_ms = median(cpu_times);
   s.avg_time_to_best_ms = mean(times_to_best);
   s.median_time_to_best_ms = median(times_to_best);
-  s.best_run = bestRunIndex(runs);
-  s.median_run = medianRunIndex(runs);
-  s.best_route_turn_deg = runs[s.best_run].total_turn_deg;
+  s.best_run_index = bestRunIndex(runs);
+  s.median_run_index = medianRunIndex(runs);
+  s.best_route_turn_deg = runs[s.best_run_index].total_turn_deg;
   s.avg_gap_pct = gapPercent(s.avg_length, optimum);
   s.best_gap_pct = gapPercent(s.best_length, optimum);
   s.worst_gap_pct = gapPercent(s.worst_length, optimum);
   return s;
-}
-
-nlohmann::json toJson(const Summary& s) {
-  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  return {
-      {"runs", s.runs},
-      {"successes", s.successes},
-      {"success_rate", s.success_rate},
-      {"optimal_runs", s.optimal_runs},
-      {"interrupted_runs", s.interrupted_runs},
-      {"stopped_early_runs", s.stopped_early_runs},
-      {"avg_length", number(s.avg_length)},
-      {"best_length", number(s.best_length)},
-      {"worst_length", number(s.worst_length)},
-      {"std_length", s.std_length},
-      {"avg_iterations", s.avg_iterations},
-      {"avg_iterations_run", s.avg_iterations_run},
-      {"avg_lost_ants", s.avg_lost_ants},
-      {"best_route_turn_deg", s.best_route_turn_deg},
-      {"avg_time_ms", s.avg_time_ms},
-      {"median_time_ms", s.median_time_ms},
-      {"median_cpu_ms", s.median_cpu_ms},
-      {"avg_time_to_best_ms", s.avg_time_to_best_ms},
-      {"median_time_to_best_ms", s.median_time_to_best_ms},
-      {"avg_gap_pct", number(s.avg_gap_pct)},
-      {"best_gap_pct", number(s.best_gap_pct)},
-      {"worst_gap_pct", number(s.worst_gap_pct)},
-      {"best_run_index", s.best_run},
-      {"median_run_index", s.median_run},
-  };
 }
 
 }  // namespace eaci_bench

@@ -36,9 +36,16 @@ struct Summary {
   double avg_gap_pct = 0.0;         // (avg_length / optimum - 1) * 100
   double best_gap_pct = 0.0;
   double worst_gap_pct = 0.0;
-  std::size_t best_run = 0;         // index of the shortest route (least turning, then first, on ties)
-  std::size_t median_run = 0;       // index of the median run by (length, iterations, lost ants)
+  std::size_t best_run_index = 0;   // the shortest route (least turning, then first, on ties)
+  std::size_t median_run_index = 0; // the median run by (length, iterations, lost ants)
 };
+
+// Every field under its own name; a non-finite number (no successful run, no optimum) comes out as null.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Summary, runs, successes, optimal_runs, interrupted_runs, stopped_early_runs,
+                                   success_rate, avg_length, best_length, worst_length, std_length, avg_iterations,
+                                   avg_iterations_run, avg_lost_ants, best_route_turn_deg, avg_time_ms,
+                                   median_time_ms, median_cpu_ms, avg_time_to_best_ms, median_time_to_best_ms,
+                                   avg_gap_pct, best_gap_pct, worst_gap_pct, best_run_index, median_run_index)
 
 double mean(const std::vector<double>& values);
 double median(std::vector<double> values);
@@ -46,7 +53,5 @@ double sampleStandardDeviation(const std::vector<double>& values);
 
 // optimum <= 0 or infinite: no gaps.
 Summary summarize(const std::vector<RunRecord>& runs, double optimum);
-
-nlohmann::json toJson(const Summary& s);
 
 }  // namespace eaci_bench

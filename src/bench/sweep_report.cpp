@@ -5,7 +5,9 @@
 
 #include "eaci/aco/parameters.hpp"
 #include "paper_maps.hpp"
+#include "parameter_symbols.hpp"
 #include "report_format.hpp"
+#include "variant_key.hpp"
 
 namespace eaci_bench {
 
@@ -15,12 +17,6 @@ nlohmann::json compactRuns(const std::vector<RunRecord>& runs) {
   nlohmann::json out = nlohmann::json::array();
   for (const RunRecord& r : runs) out.push_back(toJson(r, false, false));
   return out;
-}
-
-std::string valueText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
 }
 
 const SweepPoint* findPoint(const std::vector<SweepPoint>& points, const std::string& axis, double value,
@@ -34,13 +30,13 @@ std::string optimalText(const Summary& s) { return std::to_string(s.optimal_runs
 
 std::string axisTable(const std::vector<SweepPoint>& points, const SweepAxis& axis, const std::string& map,
                       const std::vector<std::string>& strategies) {
-  std::vector<std::string> header = {axis.symbol};
+  std::vector<std::string> header = {paperSymbol(axis.key)};
   for (const std::string& strategy : strategies)
     for (const char* column : {"length", "iterations", "lost ants", "optimal"})
       header.push_back(strategy + ": " + column);
   MarkdownTable table(header);
   for (double value : axis.values) {
-    std::vector<std::string> row = {valueText(value)};
+    std::vector<std::string> row = {parameterText(value)};
     for (const std::string& strategy : strategies) {
       const SweepPoint* p = findPoint(points, axis.key, value, map, strategy);
       if (p == nullptr) {
@@ -67,7 +63,7 @@ std::string rhoDetailTable(const std::vector<const RhoPoint*>& points) {
   MarkdownTable table({"map", "ρ", "iterations", "paper", "ours ÷ paper", "lost ants", "paper", "ours ÷ paper",
                        "avg length", "best length", "success", "within 2× on both"});
   for (const RhoPoint* p : points)
-    table.addRow({p->map, valueText(p->rho), fixed(p->summary.avg_iterations, 2), fixed(p->paper.avg_iterations, 1),
+    table.addRow({p->map, parameterText(p->rho), fixed(p->summary.avg_iterations, 2), fixed(p->paper.avg_iterations, 1),
                   ratio(p->summary.avg_iterations, p->paper.avg_iterations), fixed(p->summary.avg_lost_ants, 1),
                   fixed(p->paper.avg_lost_ants, 1), ratio(p->summary.avg_lost_ants, p->paper.avg_lost_ants),
                   fixed(p->summary.avg_length, 3), fixed(p->summary.best_length, 3),
@@ -91,7 +87,7 @@ std::string rhoGridTable(const std::vector<RhoPoint>& rho, double tau0) {
   header.push_back("all maps within 2×");
   MarkdownTable table(header);
   for (double value : acoRhoValues()) {
-    std::vector<std::string> row = {valueText(value)};
+    std::vector<std::string> row = {parameterText(value)};
     bool all = true;
     for (const std::string& map : maps) {
       const RhoPoint* found = nullptr;
@@ -137,7 +133,7 @@ std::string rhoVerdict(const std::vector<RhoPoint>& rho) {
   for (const auto& [tau0, value] : passing)
     defaults_pass = defaults_pass || (tau0 == defaults.aco_tau0 && value == defaults.aco_rho);
   std::ostringstream s;
-  s << "Our defaults (τ0 = " << valueText(defaults.aco_tau0) << ", ρ = " << valueText(defaults.aco_rho) << ") "
+  s << "Our defaults (τ0 = " << parameterText(defaults.aco_tau0) << ", ρ = " << parameterText(defaults.aco_rho) << ") "
     << (defaults_pass ? "bring classic ACO within a factor 2 of the paper's ACO iterations and lost ants on every map."
                       : "**do not bring classic ACO within a factor 2 of the paper's ACO iterations and lost ants on "
                         "every map.**")
@@ -146,7 +142,7 @@ std::string rhoVerdict(const std::vector<RhoPoint>& rho) {
     << "\n\nSettings within a factor 2 on every map:";
   if (passing.empty()) s << " none.";
   for (std::size_t k = 0; k < passing.size(); ++k)
-    s << (k ? "," : "") << " τ0 = " << valueText(passing[k].first) << " with ρ = " << valueText(passing[k].second);
+    s << (k ? "," : "") << " τ0 = " << parameterText(passing[k].first) << " with ρ = " << parameterText(passing[k].second);
   s << "\n";
   return s.str();
 }
@@ -159,26 +155,28 @@ nlohmann::json sweepJson(const std::vector<SweepPoint>& eaci, const std::vector<
   for (const SweepAxis& axis : eaciSweepAxes()) {
     nlohmann::json base = nlohmann::json::object();
     for (const auto& [key, text] : axis.base) base[key] = text;
-    axes.push_back({{"parameter", axis.key}, {"symbol", axis.symbol}, {"figure", axis.figure},
+    axes.push_back({{"parameter", axis.key}, {"symbol", paperSymbol(axis.key)}, {"figure", axis.figure},
                     {"values", axis.values}, {"base", base}});
   }
   nlohmann::json points = nlohmann::json::array();
   for (const SweepPoint& p : eaci)
     points.push_back({{"parameter", p.axis}, {"value", p.value}, {"map", p.map}, {"strategy", p.strategy},
-                      {"summary", toJson(p.summary)}, {"runs", compactRuns(p.runs)}});
+                      {"summary", p.summary}, {"runs", compactRuns(p.runs)}});
   nlohmann::json rho_points = nlohmann::json::array();
   for (const RhoPoint& p : rho)
-    rho_points.push_back({{"map", p.map}, {"rho", p.rho}, {"tau0", p.tau0}, {"summary", toJson(p.summary)}, {"paper_aco", toJson(p.paper)},
+    rho_points.push_back({{"map", p.map}, {"rho", p.rho}, {"tau0", p.tau0}, {"summary", p.summary}, {"paper_aco", p.paper},
                           {"iterations_ratio", p.iterations_ratio}, {"lost_ants_ratio", p.lost_ants_ratio},
                           {"within_factor_2", p.within_factor_2}, {"runs", compactRuns(p.runs)}});
   return {{"kind", "sweep"},
-          {"provenance", toJson(provenance)},
+          {"provenance", provenance},
           {"settings",
            {{"runs", options.runs},
             {"threads", options.threads},
             {"eaci_maps", options.eaci_maps},
             {"strategies", options.strategies},
-            {"tuning_base", {{"islands", 6}, {"allow_corner_cutting", true}}}}},
+            {"tuning_base",
+             {{"islands", paperTuningParameters().islands},
+              {"allow_corner_cutting", paperTuningParameters().allow_corner_cutting}}}}},
           {"eaci_axes", axes},
           {"eaci_points", points},
           {"aco_rho_values", acoRhoValues()},
@@ -198,13 +196,13 @@ std::string sweepCsv(const std::vector<SweepPoint>& eaci, const std::vector<RhoP
                                     csvNumber(s.avg_time_ms)};
   };
   for (const SweepPoint& p : eaci) {
-    std::vector<std::string> row = {"eaci", p.axis, csvNumber(p.value), "", p.map, "eaci-" + p.strategy};
+    std::vector<std::string> row = {"eaci", p.axis, csvNumber(p.value), "", p.map, toString(eaciVariantKey(p.strategy))};
     for (const std::string& cell : common(p.summary)) row.push_back(cell);
     row.insert(row.end(), {"", ""});
     csv.addRow(row);
   }
   for (const RhoPoint& p : rho) {
-    std::vector<std::string> row = {"aco_rho", "aco_rho", csvNumber(p.rho), csvNumber(p.tau0), p.map, "aco"};
+    std::vector<std::string> row = {"aco_rho", "aco_rho", csvNumber(p.rho), csvNumber(p.tau0), p.map, toString(VariantKey::kAco)};
     for (const std::string& cell : common(p.summary)) row.push_back(cell);
     row.insert(row.end(), {csvNumber(p.paper.avg_iterations), csvNumber(p.paper.avg_lost_ants)});
     csv.addRow(row);
@@ -217,27 +215,29 @@ std::string sweepMarkdown(const std::vector<SweepPoint>& eaci, const std::vector
   std::ostringstream s;
   s << "## Parameter sweeps (the paper's Figs 11–14)\n\n"
     << provenanceMarkdown(provenance) << "\n"
-    << "EACI, corner cutting allowed, the paper's tuning parameters (m = 50, Nc_max = 100, α = 1.1, β = 7, "
-       "Q = 100, κ = 0.9, λ = 3, ε = 0.5, N = 6), one parameter varied at a time, seeds 1–"
+    << "EACI, corner cutting allowed, the paper's tuning parameters ("
+    << symbolValues(paperTuningParameters(),
+                    {"ants", "max_iterations", "alpha", "beta", "q", "kappa", "lambda", "epsilon", "islands"})
+    << "), one parameter varied at a time, seeds 1–"
     << options.runs
     << " per value. *length*: average route length; *iterations*: average iterations to converge; "
        "*lost ants*: average lost ants per run; *optimal*: runs that returned the A* optimum.\n\n";
   for (const SweepAxis& axis : eaciSweepAxes())
     for (const std::string& map : options.eaci_maps)
-      s << "### " << axis.symbol << " (`" << axis.key << "`, the paper's " << axis.figure << ") on " << map << "\n\n"
+      s << "### " << paperSymbol(axis.key) << " (`" << axis.key << "`, the paper's " << axis.figure << ") on " << map << "\n\n"
         << axisTable(eaci, axis, map, options.strategies) << "\n";
   s << "## Classic ACO: the evaporation rate ρ (and the initial pheromone τ0)\n\n"
     << "The paper gives no ρ and no τ0 for its ACO baseline. Classic ACO with the paper's m, Nc_max, α, β, "
-       "Q = 100, corner cutting allowed, seeds 1–"
+    << symbolValues(eaci::Parameters{}, {"q"}) << ", corner cutting allowed, seeds 1–"
     << options.runs << "; *paper*: the paper's ACO row; *within 2×*: both iterations and lost ants within a "
        "factor 2 of the paper's.\n\n"
-    << "### τ0 = " << valueText(eaci::Parameters{}.aco_tau0) << " (our default; our default ρ is "
-    << valueText(eaci::Parameters{}.aco_rho) << ")\n\n"
+    << "### τ0 = " << parameterText(eaci::Parameters{}.aco_tau0) << " (our default; our default ρ is "
+    << parameterText(eaci::Parameters{}.aco_rho) << ")\n\n"
     << rhoDetailTable(withTau0(rho, eaci::Parameters{}.aco_tau0)) << "\n"
     << "### Every τ0: average iterations (ours ÷ paper) / average lost ants (ours ÷ paper)\n\n"
     << "Only τ0 relative to Q / L matters (the roulette wheel of Eq. 8 does not change when every τ is "
        "scaled): τ0 = 800 with Q = 100 equals the common MATLAB ACO code's τ0 = 8 with Q = 1.\n\n";
-  for (double tau0 : acoTau0Values()) s << "τ0 = " << valueText(tau0) << ":\n\n" << rhoGridTable(rho, tau0) << "\n";
+  for (double tau0 : acoTau0Values()) s << "τ0 = " << parameterText(tau0) << ":\n\n" << rhoGridTable(rho, tau0) << "\n";
   s << rhoVerdict(rho);
   return s.str();
 }

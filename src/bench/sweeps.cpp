@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "eaci/aco/parameters.hpp"
+#include "eaci/io/text.hpp"
 #include "paper_tables.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
@@ -25,19 +25,10 @@ std::vector<double> steps(double first, double last, double step) {
   return values;
 }
 
-// Text that setParameter reads back exactly ("6" for an integer key, "0.3").
-std::string parameterText(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
-}
-
-// The paper's tuning parameters (N = 6), corner cutting allowed, EACI with `strategy` islands.
+// The paper's tuning parameters, EACI with `strategy` islands, the axis at `value`.
 eaci::Parameters tuningParameters(const SweepAxis& axis, double value, const std::string& strategy,
                                   std::uint64_t seed, int threads) {
-  eaci::Parameters params;
-  eaci::setParameter(params, "allow_corner_cutting", "true");
-  eaci::setParameter(params, "islands", "6");
+  eaci::Parameters params = paperTuningParameters();
   eaci::setParameter(params, "island_strategy", strategy);
   for (const auto& [key, text] : axis.base) eaci::setParameter(params, key, text);
   eaci::setParameter(params, axis.key, parameterText(value));
@@ -119,12 +110,21 @@ std::vector<RhoPoint> runRhoSweep(const SweepOptions& options, Progress& progres
 
 }  // namespace
 
+std::string parameterText(double value) { return eaci::formatNumber(value, 6); }
+
+eaci::Parameters paperTuningParameters() {
+  eaci::Parameters params;
+  eaci::setParameter(params, "allow_corner_cutting", "true");
+  eaci::setParameter(params, "islands", "6");
+  return params;
+}
+
 const std::vector<SweepAxis>& eaciSweepAxes() {
   static const std::vector<SweepAxis> axes = {
-      {"epsilon", "ε", "Fig. 11", steps(0.1, 1.0, 0.1), {}},
-      {"lambda", "λ", "Fig. 12", {1, 2, 3, 4, 5, 6, 10, 20, 50, 100}, {}},
-      {"islands", "N", "Fig. 13", steps(2, 15, 1), {}},
-      {"kappa", "κ", "Fig. 14", steps(0.1, 1.3, 0.1), {}},
+      {"epsilon", "Fig. 11", steps(0.1, 1.0, 0.1), {}},
+      {"lambda", "Fig. 12", {1, 2, 3, 4, 5, 6, 10, 20, 50, 100}, {}},
+      {"islands", "Fig. 13", steps(2, 15, 1), {}},
+      {"kappa", "Fig. 14", steps(0.1, 1.3, 0.1), {}},
   };
   return axes;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "eaci/aco/parameters.hpp"
 #include "paper_maps.hpp"
 #include "statistics.hpp"
 
@@ -24,8 +25,7 @@ struct SweepOptions {
 
 // One parameter study: `key` takes each of `values`; `base` is set first.
 struct SweepAxis {
-  std::string key;      // a Parameters name (setParameter)
-  std::string symbol;   // for tables: "ε"
+  std::string key;      // a Parameters name (setParameter); paperSymbol(key) in the tables
   std::string figure;   // the paper's figure
   std::vector<double> values;
   std::vector<std::pair<std::string, std::string>> base;
@@ -51,6 +51,13 @@ struct RhoPoint {
   double lost_ants_ratio = 0.0;
   bool within_factor_2 = false;   // both ratios in [0.5, 2]
 };
+
+// A swept value as setParameter reads it and the tables show it: "6" for an integer key, "0.3".
+std::string parameterText(double value);
+
+// The paper's tuning parameters: its comparison parameters (the defaults) with N = 6, corner
+// cutting allowed.
+eaci::Parameters paperTuningParameters();
 
 const std::vector<SweepAxis>& eaciSweepAxes();
 const std::vector<double>& acoRhoValues();

@@ -18,9 +18,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <sstream>
 #include <system_error>
 #include <utility>
+
+#include "eaci/io/text.hpp"
 
 namespace eaci {
 namespace {
@@ -30,15 +31,12 @@ namespace fs = std::filesystem;
 // A map_server YAML file is a handful of lines; anything this large is not one.
 constexpr std::size_t kMaxYamlFileBytes = std::size_t{1} << 20;
 
+// Numbers quoted in messages (thresholds, resolution) keep this many decimals at most.
+constexpr int kMessageDecimals = 6;
+
 // ------------------------------------------------------------------ errors
 
-// Messages are one line, whatever the file names contain.
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
-
+// Messages are one line (oneLine), whatever the file names contain.
 [[noreturn]] void fail(const std::string& source, const std::string& reason) {
   throw MapLoadError(oneLine(source + ": " + reason));
 }
@@ -510,21 +508,15 @@ class YamlMapReader {
     metadata.thresholds.occupied_thresh = readThreshold("occupied_thresh", 0.65);
     metadata.thresholds.free_thresh = readThreshold("free_thresh", 0.196);
     if (!(metadata.thresholds.free_thresh < metadata.thresholds.occupied_thresh)) {
-      fail(path_, "free_thresh (" + formatNumber(metadata.thresholds.free_thresh) +
+      fail(path_, "free_thresh (" + formatNumber(metadata.thresholds.free_thresh, kMessageDecimals) +
                       ") must be smaller than occupied_thresh (" +
-                      formatNumber(metadata.thresholds.occupied_thresh) + ")");
+                      formatNumber(metadata.thresholds.occupied_thresh, kMessageDecimals) + ")");
     }
     checkMode();
     return metadata;
   }
 
  private:
-  static std::string formatNumber(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-  }
-
   YAML::Node optionalKey(const std::string& key) const { return root_[key]; }
 
   YAML::Node requiredKey(const std::string& key) const {
@@ -552,7 +544,7 @@ class YamlMapReader {
 
   double readPositiveNumber(const std::string& key) const {
     const double value = readNumber(requiredKey(key), key);
-    if (!(value > 0.0)) failKey(key, "must be positive, got " + formatNumber(value));
+    if (!(value > 0.0)) failKey(key, "must be positive, got " + formatNumber(value, kMessageDecimals));
     return value;
   }
 
@@ -560,7 +552,7 @@ class YamlMapReader {
     const YAML::Node node = optionalKey(key);
     if (!node.IsDefined()) return default_value;
     const double value = readNumber(node, key);
-    if (value < 0.0 || value > 1.0) failKey(key, "must be between 0 and 1, got " + formatNumber(value));
+    if (value < 0.0 || value > 1.0) failKey(key, "must be between 0 and 1, got " + formatNumber(value, kMessageDecimals));
     return value;
   }
 
@@ -674,8 +666,7 @@ OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string&
   map.width = image.width;
   map.height = image.height;
   map.resolution = metadata.resolution;
-  map.origin_x = metadata.origin[0];
-  map.origin_y = metadata.origin[1];
+  map.origin = {metadata.origin[0], metadata.origin[1]};
   map.origin_yaw = metadata.origin[2];
   map.cells = thresholdImage(image, metadata.thresholds);
   return map;

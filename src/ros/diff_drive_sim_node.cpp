@@ -41,9 +41,9 @@ class DiffDriveSim {
     encoders.seed = static_cast<std::uint64_t>(seed);
     eaci::robot::validate(encoders);
     Pose2 start;
-    private_nh_.param("initial_x", start.x, 0.0);
-    private_nh_.param("initial_y", start.y, 0.0);
-    private_nh_.param("initial_yaw", start.yaw, 0.0);
+    private_nh_.param("initial_x", start.position.x(), 0.0);
+    private_nh_.param("initial_y", start.position.y(), 0.0);
+    private_nh_.param("initial_yaw", start.orientation.angle(), 0.0);
     private_nh_.param<std::string>("odom_frame", odom_frame_, "odom");
     private_nh_.param<std::string>("base_frame", base_frame_, "base_link");
     double rate = 50.0;
@@ -88,10 +88,10 @@ class DiffDriveSim {
     odom.header.stamp = stamp;
     odom.header.frame_id = odom_frame_;
     odom.child_frame_id = base_frame_;
-    odom.pose.pose.position.x = pose.x;
-    odom.pose.pose.position.y = pose.y;
+    odom.pose.pose.position.x = pose.position.x();
+    odom.pose.pose.position.y = pose.position.y();
     tf2::Quaternion q;
-    q.setRPY(0, 0, pose.yaw);
+    q.setRPY(0, 0, pose.orientation.angle());
     odom.pose.pose.orientation = tf2::toMsg(q);
     odom.twist.twist.linear.x = v;
     odom.twist.twist.angular.z = omega;
@@ -103,10 +103,10 @@ class DiffDriveSim {
     t.header.stamp = stamp;
     t.header.frame_id = odom_frame_;
     t.child_frame_id = base_frame_;
-    t.transform.translation.x = pose.x;
-    t.transform.translation.y = pose.y;
+    t.transform.translation.x = pose.position.x();
+    t.transform.translation.y = pose.position.y();
     tf2::Quaternion q;
-    q.setRPY(0, 0, pose.yaw);
+    q.setRPY(0, 0, pose.orientation.angle());
     t.transform.rotation = tf2::toMsg(q);
     tf_broadcaster_.sendTransform(t);
   }

@@ -10,9 +10,9 @@
 #include "grid_conversion.hpp"
 #include "grid_planner.hpp"
 
-PLUGINLIB_EXPORT_CLASS(eaci_planner::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
+PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
 
-namespace eaci_planner {
+namespace eaci_ros {
 
 EaciGlobalPlanner::EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros) {
   initialize(std::move(name), costmap_ros);
@@ -27,11 +27,11 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   costmap_ros_ = costmap_ros;
   ros::NodeHandle private_nh("~/" + name);
   try {
-    eaci_ros::readParameters(private_nh, params_, options_);
+    readParameters(private_nh, params_, options_);
   } catch (const std::exception& e) {
     ROS_ERROR("EaciGlobalPlanner %s: %s; using the defaults", name.c_str(), e.what());
     params_ = eaci::Parameters{};
-    options_ = eaci_ros::RosPlannerOptions{};
+    options_ = RosPlannerOptions{};
   }
   plan_pub_ = private_nh.advertise<nav_msgs::Path>("plan", 1);
   pheromone_pub_ = private_nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
@@ -70,15 +70,14 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   }
 
   std::lock_guard<std::mutex> one_at_a_time(plan_mutex_);
-  const eaci_ros::PlanCancellation::Scope in_progress(cancellation_);
+  const PlanCancellation::Scope in_progress(cancellation_);
   costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
-  eaci_ros::GridPlan result;
-  eaci_ros::MapFrame map_frame;
+  GridPlan result;
+  MapFrame map_frame;
   {
     std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
     map_frame.frame_id = frame;
-    map_frame.origin_x = costmap->getOriginX();
-    map_frame.origin_y = costmap->getOriginY();
+    map_frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
     map_frame.resolution = costmap->getResolution();
     map_frame.width = static_cast<int>(costmap->getSizeInCellsX());
     map_frame.height = static_cast<int>(costmap->getSizeInCellsY());
@@ -88,19 +87,19 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     costs.unknown_value = costmap_2d::NO_INFORMATION;
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
-    result = eaci_ros::planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
+    result = planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
   }
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
     return false;
   }
-  if (result.stopped_by != eaci_ros::StopReason::kNone)
+  if (result.stopped_by != StopReason::kNone)
     ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning the best route so far", name_.c_str(),
-             eaci_ros::toString(result.stopped_by), result.result.iterations_run);
+             toString(result.stopped_by), result.result.iterations_run);
   plan = result.path.poses;
   if (options_.publish_plan) plan_pub_.publish(result.path);
   if (options_.visualize_pheromone && !result.result.pheromone.empty())
-    pheromone_pub_.publish(eaci_ros::fieldToGrid(result.result.pheromone, map_frame, ros::Time::now()));
+    pheromone_pub_.publish(fieldToGrid(result.result.pheromone, map_frame, ros::Time::now()));
   return true;
 }
 
@@ -125,4 +124,4 @@ bool EaciGlobalPlanner::onCancel(std_srvs::Trigger::Request&, std_srvs::Trigger:
   return true;
 }
 
-}  // namespace eaci_planner
+}  // namespace eaci_ros

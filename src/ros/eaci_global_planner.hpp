@@ -20,7 +20,7 @@
 #include "plan_cancellation.hpp"
 #include "ros_parameters.hpp"
 
-namespace eaci_planner {
+namespace eaci_ros {
 
 class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
  public:
@@ -51,15 +51,15 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   std::string name_;
   costmap_2d::Costmap2DROS* costmap_ros_ = nullptr;
   eaci::Parameters params_;
-  eaci_ros::RosPlannerOptions options_;
+  RosPlannerOptions options_;
   ros::Publisher plan_pub_;
   ros::Publisher pheromone_pub_;
   ros::ServiceServer make_plan_service_;
   std::mutex plan_mutex_;
-  eaci_ros::PlanCancellation cancellation_;
+  PlanCancellation cancellation_;
   ros::CallbackQueue cancel_queue_;
   std::unique_ptr<ros::AsyncSpinner> cancel_spinner_;
   ros::ServiceServer cancel_service_;
 };
 
-}  // namespace eaci_planner
+}  // namespace eaci_ros

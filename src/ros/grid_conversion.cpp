@@ -1,7 +1,10 @@
 #include "grid_conversion.hpp"
 
 #include <tf2/LinearMath/Quaternion.h>
+#include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +15,8 @@ namespace eaci_ros {
 MapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
   MapFrame f;
   f.frame_id = grid.header.frame_id;
-  f.origin_x = grid.info.origin.position.x;
-  f.origin_y = grid.info.origin.position.y;
+  f.origin = {grid.info.origin.position.x, grid.info.origin.position.y};
+  f.origin_yaw = tf2::getYaw(grid.info.origin.orientation);
   f.resolution = grid.info.resolution;
   f.width = static_cast<int>(grid.info.width);
   f.height = static_cast<int>(grid.info.height);
@@ -26,8 +29,8 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
   grid.info.resolution = static_cast<float>(map.resolution);
   grid.info.width = static_cast<std::uint32_t>(map.width);
   grid.info.height = static_cast<std::uint32_t>(map.height);
-  grid.info.origin.position.x = map.origin_x;
-  grid.info.origin.position.y = map.origin_y;
+  grid.info.origin.position.x = map.origin.x();
+  grid.info.origin.position.y = map.origin.y();
   tf2::Quaternion q;
   q.setRPY(0, 0, map.origin_yaw);
   grid.info.origin.orientation = tf2::toMsg(q);
@@ -75,19 +78,6 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
   }
 }
 
-std::optional<eaci::Cell> cellAt(const MapFrame& frame, double x, double y) {
-  if (!std::isfinite(x) || !std::isfinite(y) || !(frame.resolution > 0)) return std::nullopt;
-  const double col = std::floor((x - frame.origin_x) / frame.resolution);
-  const double row_from_bottom = std::floor((y - frame.origin_y) / frame.resolution);
-  if (col < 0 || row_from_bottom < 0 || col >= frame.width || row_from_bottom >= frame.height) return std::nullopt;
-  return eaci::Cell{frame.height - 1 - static_cast<int>(row_from_bottom), static_cast<int>(col)};
-}
-
-void cellCentre(const MapFrame& frame, eaci::Cell cell, double& x, double& y) {
-  x = frame.origin_x + (cell.col + 0.5) * frame.resolution;
-  y = frame.origin_y + (frame.height - 1 - cell.row + 0.5) * frame.resolution;
-}
-
 std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells) {
   if (view.isFree(cell)) return cell;
   const int reach = static_cast<int>(std::floor(std::max(0.0, radius_cells)));
@@ -111,23 +101,20 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const 
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
   if (cells.empty()) return path;
-  std::vector<std::pair<double, double>> points;
+  std::vector<Eigen::Vector2d> points;
   points.reserve(cells.size());
-  for (const eaci::Cell& c : cells) {
-    double x, y;
-    cellCentre(frame, c, x, y);
-    points.emplace_back(x, y);
-  }
+  for (const eaci::Cell& c : cells) points.push_back(frame.cellToWorld(c));
   points.front() = {start.pose.position.x, start.pose.position.y};
   if (cells.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
   for (std::size_t k = 0; k < points.size(); ++k) {
     geometry_msgs::PoseStamped pose;
     pose.header = path.header;
-    pose.pose.position.x = points[k].first;
-    pose.pose.position.y = points[k].second;
+    pose.pose.position.x = points[k].x();
+    pose.pose.position.y = points[k].y();
     if (k + 1 < points.size()) {
+      const Eigen::Vector2d towards_next = points[k + 1] - points[k];
       tf2::Quaternion q;
-      q.setRPY(0, 0, std::atan2(points[k + 1].second - points[k].second, points[k + 1].first - points[k].first));
+      q.setRPY(0, 0, std::atan2(towards_next.y(), towards_next.x()));
       pose.pose.orientation = tf2::toMsg(q);
     } else {
       pose.pose.orientation = goal.pose.orientation;
@@ -144,8 +131,8 @@ nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapF
   grid.info.resolution = static_cast<float>(frame.resolution);
   grid.info.width = static_cast<std::uint32_t>(frame.width);
   grid.info.height = static_cast<std::uint32_t>(frame.height);
-  grid.info.origin.position.x = frame.origin_x;
-  grid.info.origin.position.y = frame.origin_y;
+  grid.info.origin.position.x = frame.origin.x();
+  grid.info.origin.position.y = frame.origin.y();
   grid.info.origin.orientation.w = 1.0;
   grid.data.assign(field.size(), 0);
   double low = std::numeric_limits<double>::infinity(), high = 0.0;

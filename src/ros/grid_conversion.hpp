@@ -12,20 +12,16 @@
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/grid_view.hpp"
+#include "eaci/grid/map_frame.hpp"
 #include "eaci/io/occupancy_map.hpp"
 
 namespace eaci_ros {
 
-// Where a grid sits in the world: like costmap_2d and nav_msgs/OccupancyGrid, the origin is
-// the corner of the cell in the first buffer row (the bottom row) and first column; the
-// origin's rotation is ignored, as costmap_2d does.
-struct MapFrame {
+// Where a grid sits in the world (eaci::MapFrame: worldToCell, cellToWorld) and the TF frame it
+// sits in. Like costmap_2d and nav_msgs/OccupancyGrid, the origin is the corner of the cell in
+// the first buffer row (the bottom row) and first column, and its rotation is ignored.
+struct MapFrame : eaci::MapFrame {
   std::string frame_id;
-  double origin_x = 0.0;
-  double origin_y = 0.0;
-  double resolution = 1.0;
-  int width = 0;
-  int height = 0;
 };
 
 MapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
@@ -40,12 +36,6 @@ eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshol
 // Marks every cell whose centre lies within `radius` metres of an occupied cell's centre as
 // occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles.
 void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied_threshold);
-
-// World point -> core cell (row 0 = top of the map); nothing when off the map.
-std::optional<eaci::Cell> cellAt(const MapFrame& frame, double x, double y);
-
-// Core cell -> world position of its centre.
-void cellCentre(const MapFrame& frame, eaci::Cell cell, double& x, double& y);
 
 // Nearest free cell to `cell` within `radius_cells` (Euclidean, in cells), `cell` itself if free.
 std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells);

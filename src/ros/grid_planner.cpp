@@ -2,6 +2,8 @@
 
 #include <ros/ros.h>
 
+#include <Eigen/Core>
+
 #include <chrono>
 #include <cstdio>
 
@@ -36,10 +38,10 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
                     const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
                     const RosPlannerOptions& options, const std::atomic<bool>* cancel) {
   if (view.empty()) return failed("the map is empty");
-  const auto start_cell = cellAt(frame, start.pose.position.x, start.pose.position.y);
+  const auto start_cell = frame.worldToCell({start.pose.position.x, start.pose.position.y});
   if (!start_cell) return failed("start " + where(start) + " is off the map");
   if (view.isObstacle(*start_cell)) return failed("start " + where(start) + " is in an obstacle");
-  const auto goal_cell = cellAt(frame, goal.pose.position.x, goal.pose.position.y);
+  const auto goal_cell = frame.worldToCell({goal.pose.position.x, goal.pose.position.y});
   if (!goal_cell) return failed("goal " + where(goal) + " is off the map");
   const auto reachable_goal = nearestFreeCell(view, *goal_cell, tolerance / frame.resolution);
   if (!reachable_goal) {
@@ -76,7 +78,11 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
     return plan;
   }
   geometry_msgs::PoseStamped target = goal;
-  if (!(*reachable_goal == *goal_cell)) cellCentre(frame, *reachable_goal, target.pose.position.x, target.pose.position.y);
+  if (!(*reachable_goal == *goal_cell)) {
+    const Eigen::Vector2d centre = frame.cellToWorld(*reachable_goal);
+    target.pose.position.x = centre.x();
+    target.pose.position.y = centre.y();
+  }
   plan.path = toPath(plan.result.path, frame, start, target, ros::Time::now());
   plan.ok = true;
   return plan;

@@ -21,6 +21,9 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <optional>
 #include <string>
@@ -30,17 +33,16 @@
 
 namespace eaci_ros {
 
-using eaci::robot::Point2;
-
 // Keeps the first and last pose and every pose where the direction changes: a grid path's
 // straight runs become single segments.
-std::vector<Point2> cornerPoints(const std::vector<Point2>& points) {
+std::vector<Eigen::Vector2d> cornerPoints(const std::vector<Eigen::Vector2d>& points) {
   if (points.size() < 3) return points;
-  std::vector<Point2> corners{points.front()};
+  std::vector<Eigen::Vector2d> corners{points.front()};
   for (std::size_t k = 1; k + 1 < points.size(); ++k) {
-    const double ax = points[k].x - points[k - 1].x, ay = points[k].y - points[k - 1].y;
-    const double bx = points[k + 1].x - points[k].x, by = points[k + 1].y - points[k].y;
-    if (std::abs(ax * by - ay * bx) > 1e-9 * (std::hypot(ax, ay) * std::hypot(bx, by) + 1e-12)) corners.push_back(points[k]);
+    const Eigen::Vector2d in = points[k] - points[k - 1], out = points[k + 1] - points[k];
+    const double cross = in.x() * out.y() - in.y() * out.x();
+    const double lengths = std::hypot(in.x(), in.y()) * std::hypot(out.x(), out.y());
+    if (std::abs(cross) > 1e-9 * (lengths + 1e-12)) corners.push_back(points[k]);
   }
   corners.push_back(points.back());
   return corners;
@@ -92,8 +94,8 @@ class PidPathFollowerNode {
 
  private:
   void onOdometry(const nav_msgs::Odometry::ConstPtr& odom) {
-    pose_ = eaci::robot::Pose2{odom->pose.pose.position.x, odom->pose.pose.position.y,
-                               tf2::getYaw(odom->pose.pose.orientation)};
+    pose_ = eaci::robot::Pose2{{odom->pose.pose.position.x, odom->pose.pose.position.y},
+                               Eigen::Rotation2Dd(tf2::getYaw(odom->pose.pose.orientation))};
   }
 
   void onGoal(const geometry_msgs::PoseStamped::ConstPtr& goal) {
@@ -105,7 +107,7 @@ class PidPathFollowerNode {
 
   // Brings the path into the odom frame and hands it to the follower.
   bool follow(const nav_msgs::Path& path) {
-    std::vector<Point2> points;
+    std::vector<Eigen::Vector2d> points;
     std::optional<double> goal_yaw;
     try {
       for (const auto& pose : path.poses) {
@@ -120,17 +122,17 @@ class PidPathFollowerNode {
       ROS_ERROR("pid_path_follower: cannot bring the path into %s: %s", odom_frame_.c_str(), e.what());
       return false;
     }
-    const std::vector<Point2> corners = cornerPoints(points);
+    const std::vector<Eigen::Vector2d> corners = cornerPoints(points);
     follower_.setPath(corners, goal_yaw);
     publishArrived(false);
     nav_msgs::Path followed;
     followed.header.frame_id = odom_frame_;
     followed.header.stamp = ros::Time::now();
-    for (const Point2& p : corners) {
+    for (const Eigen::Vector2d& p : corners) {
       geometry_msgs::PoseStamped pose;
       pose.header = followed.header;
-      pose.pose.position.x = p.x;
-      pose.pose.position.y = p.y;
+      pose.pose.position.x = p.x();
+      pose.pose.position.y = p.y();
       pose.pose.orientation.w = 1.0;
       followed.poses.push_back(pose);
     }
@@ -146,10 +148,10 @@ class PidPathFollowerNode {
     try {
       geometry_msgs::PoseStamped here;
       here.header.frame_id = odom_frame_;
-      here.pose.position.x = pose_->x;
-      here.pose.position.y = pose_->y;
+      here.pose.position.x = pose_->position.x();
+      here.pose.position.y = pose_->position.y();
       tf2::Quaternion q;
-      q.setRPY(0, 0, pose_->yaw);
+      q.setRPY(0, 0, pose_->orientation.angle());
       here.pose.orientation = tf2::toMsg(q);
       srv.request.start = tf_buffer_.transform(here, pending_goal_->header.frame_id, ros::Duration(0.5));
     } catch (const tf2::TransformException& e) {
@@ -183,7 +185,7 @@ class PidPathFollowerNode {
       state.data = eaci::robot::toString(command.state);
       state_pub_.publish(state);
       if (command.state == eaci::robot::FollowerState::kArrived) {
-        ROS_INFO("pid_path_follower: arrived at (%.3f, %.3f)", pose_->x, pose_->y);
+        ROS_INFO("pid_path_follower: arrived at (%.3f, %.3f)", pose_->position.x(), pose_->position.y());
         publishArrived(true);
       }
       last_state_ = command.state;

@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
 #include "cli_args.hpp"
@@ -30,11 +30,14 @@
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/io/parameter_file.hpp"
+#include "eaci/io/text.hpp"
 #include "eaci/planner.hpp"
 #include "plan_image.hpp"
 #include "plan_json.hpp"
 
 namespace {
+
+using eaci::formatNumber;
 
 constexpr int kExitPath = 0;
 constexpr int kExitBadInput = 2;
@@ -50,21 +53,13 @@ class InputError : public std::runtime_error {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void onInterrupt(int) { g_interrupted = 1; }
 
-// Collapses a message to one line.
-std::string oneLine(const std::string& text) {
-  std::string out;
-  bool space = false;
-  for (char ch : text) {
-    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
-    if (ch == ' ' && (space || out.empty())) continue;
-    space = ch == ' ';
-    out += ch;
-  }
-  while (!out.empty() && out.back() == ' ') out.pop_back();
-  return out.empty() ? "unknown error" : out;
+// A message on one line, never empty.
+std::string errorLine(const std::string& message) {
+  const std::string line = eaci::oneLine(message);
+  return line.empty() ? "unknown error" : line;
 }
 
-void printError(const std::string& message) { std::cerr << kErrorPrefix << oneLine(message) << std::endl; }
+void printError(const std::string& message) { std::cerr << kErrorPrefix << errorLine(message) << std::endl; }
 
 struct Options {
   std::string map_path;
@@ -117,17 +112,6 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
   if (!error.empty()) throw InputError("invalid parameter: " + error);
 }
 
-std::string formatNumber(double v, int precision = 4) {
-  std::ostringstream s;
-  s << std::setprecision(precision) << std::fixed << v;
-  std::string text = s.str();
-  if (text.find('.') != std::string::npos) {
-    while (text.back() == '0') text.pop_back();
-    if (text.back() == '.') text.pop_back();
-  }
-  return text;
-}
-
 // One of R,C / serial / X,Y (exactly one is set; checked before).
 eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc, const std::string& serial,
                            const std::string& xy, const std::string& name) {
@@ -143,11 +127,11 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
       return eaci::cellFromSerial(g, map.width);
     }
     const auto [x, y] = eaci::cli::parseXY(xy, "--" + name + "-xy");
-    const std::optional<eaci::Cell> cell = map.cellAtWorld(x, y);
+    const std::optional<eaci::Cell> cell = map.worldToCell({x, y});
     if (!cell) {
-      const double x1 = map.origin_x + map.width * map.resolution, y1 = map.origin_y + map.height * map.resolution;
-      throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin_x) + " .. " +
-                       formatNumber(x1) + " m, y " + formatNumber(map.origin_y) + " .. " + formatNumber(y1) + " m)");
+      const double x1 = map.origin.x() + map.width * map.resolution, y1 = map.origin.y() + map.height * map.resolution;
+      throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin.x()) + " .. " +
+                       formatNumber(x1) + " m, y " + formatNumber(map.origin.y()) + " .. " + formatNumber(y1) + " m)");
     }
     return *cell;
   } catch (const std::invalid_argument& e) {
@@ -156,9 +140,9 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
 }
 
 std::string describeCell(const eaci::OccupancyMap& map, eaci::Cell c) {
-  const eaci::Point2 p = map.worldAtCell(c);
-  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x) + ", " +
-         formatNumber(p.y) + ") m";
+  const Eigen::Vector2d p = map.cellToWorld(c);
+  return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ") = (" + formatNumber(p.x()) + ", " +
+         formatNumber(p.y()) + ") m";
 }
 
 std::string upper(std::string s) {
@@ -198,7 +182,7 @@ std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanConte
     if (r.islands.size() > 2) s << ", " << r.islands.size() - 2 << " islands";
     s << ", seed " << context.parameters.seed;
   } else {
-    s << ": " << oneLine(r.error);
+    s << ": " << errorLine(r.error);
   }
   return s.str();
 }
@@ -333,7 +317,7 @@ int run(int argc, char** argv) {
     eaci::PlanResult failed;
     failed.algorithm = algorithm;
     failed.status = eaci::PlanStatus::kInvalidInput;
-    failed.error = oneLine(message);
+    failed.error = errorLine(message);
     writeOutputs(o, failed, context, unknown, params);
     printError(message);
     return kExitBadInput;

@@ -9,22 +9,19 @@
 #include <stdexcept>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "common/cell_json.hpp"
+#include "common/json_number.hpp"
+#include "common/parameters_json.hpp"
+
 namespace eaci::tools {
 namespace {
 
 using json = nlohmann::ordered_json;
+using report::finiteOrNull;
 
-json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json cellJson(Cell c) { return json::array({c.row, c.col}); }
-
-json optionalCellJson(const std::optional<Cell>& c) { return c ? cellJson(*c) : json(nullptr); }
-
-json lengthsJson(const std::vector<double>& lengths) {
-  json out = json::array();
-  for (double v : lengths) out.push_back(finiteOrNull(v));
-  return out;
-}
+json optionalCellJson(const std::optional<Cell>& c) { return c ? json(*c) : json(nullptr); }
 
 const char* statusName(PlanStatus s) {
   switch (s) {
@@ -36,20 +33,6 @@ const char* statusName(PlanStatus s) {
 }
 
 }  // namespace
-
-json parametersToJson(const Parameters& p) {
-  json out = json::object();
-  for (const auto& [name, value] : parameterValues(p)) {
-    out[name] = std::visit(
-        [](const auto& v) -> json {
-          using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, double>) return finiteOrNull(v);
-          else return json(v);
-        },
-        value);
-  }
-  return out;
-}
 
 json planToJson(const PlanResult& r, const PlanContext& context) {
   const OccupancyMap* map = context.map;
@@ -67,10 +50,10 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
 
   json path = json::array(), path_xy = json::array();
   for (const Cell& c : r.path) {
-    path.push_back(cellJson(c));
+    path.push_back(c);
     if (map) {
-      const Point2 p = map->worldAtCell(c);
-      path_xy.push_back(json::array({p.x, p.y}));
+      const Eigen::Vector2d p = map->cellToWorld(c);
+      path_xy.push_back(json::array({p.x(), p.y()}));
     }
   }
   j["path"] = std::move(path);
@@ -82,15 +65,13 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["interrupted"] = r.interrupted;
   j["lost_ants_total"] = r.lost_ants_total;
   j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
-  j["best_length_per_iteration"] = lengthsJson(r.iteration_best_length);
-  j["best_length_so_far"] = lengthsJson(r.best_length_so_far);
+  j["best_length_per_iteration"] = finiteOrNull(r.iteration_best_length);
+  j["best_length_so_far"] = finiteOrNull(r.best_length_so_far);
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
-  json islands = json::array();
-  for (const Cell& c : r.islands) islands.push_back(cellJson(c));
-  j["islands"] = std::move(islands);
+  j["islands"] = r.islands;
 
-  j["time_ms"] = context.time_ms ? finiteOrNull(*context.time_ms) : json(nullptr);
+  j["time_ms"] = context.time_ms ? json(finiteOrNull(*context.time_ms)) : json(nullptr);
   j["seed"] = context.parameters.seed;
 
   json m;
@@ -99,7 +80,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     m["width"] = map->width;
     m["height"] = map->height;
     m["resolution"] = map->resolution;
-    m["origin"] = json::array({map->origin_x, map->origin_y, map->origin_yaw});
+    m["origin"] = json::array({map->origin.x(), map->origin.y(), map->origin_yaw});
   } else {
     m["width"] = m["height"] = m["resolution"] = m["origin"] = nullptr;
   }
@@ -108,18 +89,18 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["start"] = optionalCellJson(context.start);
   j["goal"] = optionalCellJson(context.goal);
   if (map && context.start) {
-    const Point2 p = map->worldAtCell(*context.start);
-    j["start_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->cellToWorld(*context.start);
+    j["start_xy"] = json::array({p.x(), p.y()});
   } else {
     j["start_xy"] = nullptr;
   }
   if (map && context.goal) {
-    const Point2 p = map->worldAtCell(*context.goal);
-    j["goal_xy"] = json::array({p.x, p.y});
+    const Eigen::Vector2d p = map->cellToWorld(*context.goal);
+    j["goal_xy"] = json::array({p.x(), p.y()});
   } else {
     j["goal_xy"] = nullptr;
   }
-  j["parameters"] = parametersToJson(context.parameters);
+  j["parameters"] = report::parametersToJson(context.parameters);
   return j;
 }
 

@@ -25,9 +25,6 @@ struct PlanContext {
   std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
 };
 
-// All parameter values by name (the names of eaci::parameterNames()).
-nlohmann::ordered_json parametersToJson(const Parameters& parameters);
-
 // The report: success, error (only when failed), status, algorithm, length, length_m, path,
 // path_xy, iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
 // lost_ants_per_iteration, best_length_per_iteration, best_length_so_far (null where

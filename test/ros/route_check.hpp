@@ -26,7 +26,7 @@ inline std::string routeDefect(const eaci::OccupancyMap& map, const nav_msgs::Pa
   eaci::Cell previous{};
   for (std::size_t k = 0; k < path.poses.size(); ++k) {
     const auto& p = path.poses[k].pose.position;
-    const auto cell = map.cellAtWorld(p.x, p.y);
+    const auto cell = map.worldToCell({p.x, p.y});
     if (!cell) return "pose " + std::to_string(k) + " is off the map";
     if (!free(*cell)) {
       defect << "pose " << k << " (row " << cell->row << ", col " << cell->col << ") is not on a free cell";

@@ -32,15 +32,14 @@ nav_msgs::OccupancyGrid sampleGrid() {
 
 TEST(GridConversion, WorldToCellUsesTheBottomLeftOriginAndTopFirstRows) {
   const auto frame = eaci_ros::frameOf(sampleGrid());
-  EXPECT_EQ(eaci_ros::cellAt(frame, -0.9, 2.1), (Cell{2, 0}));  // bottom-left cell
-  EXPECT_EQ(eaci_ros::cellAt(frame, 0.9, 3.4), (Cell{0, 3}));   // top-right cell
-  EXPECT_FALSE(eaci_ros::cellAt(frame, -1.01, 2.1));
-  EXPECT_FALSE(eaci_ros::cellAt(frame, 1.0, 2.1));  // x = origin + width: off the map
-  EXPECT_FALSE(eaci_ros::cellAt(frame, std::nan(""), 2.1));
-  double x = 0, y = 0;
-  eaci_ros::cellCentre(frame, Cell{0, 3}, x, y);
-  EXPECT_DOUBLE_EQ(x, 0.75);
-  EXPECT_DOUBLE_EQ(y, 3.25);
+  EXPECT_EQ(frame.worldToCell({-0.9, 2.1}), (Cell{2, 0}));  // bottom-left cell
+  EXPECT_EQ(frame.worldToCell({0.9, 3.4}), (Cell{0, 3}));   // top-right cell
+  EXPECT_FALSE(frame.worldToCell({-1.01, 2.1}));
+  EXPECT_FALSE(frame.worldToCell({1.0, 2.1}));  // x = origin + width: off the map
+  EXPECT_FALSE(frame.worldToCell({std::nan(""), 2.1}));
+  const Eigen::Vector2d centre = frame.cellToWorld(Cell{0, 3});
+  EXPECT_DOUBLE_EQ(centre.x(), 0.75);
+  EXPECT_DOUBLE_EQ(centre.y(), 3.25);
 }
 
 TEST(GridConversion, ViewReadsOccupancyWithoutCopying) {

@@ -93,7 +93,7 @@ class PlannerCancel : public ::testing::Test {
   }
 
   void expectValidRoute(const nav_msgs::Path& path) {
-    const auto start = map_.cellAtWorld(0.425, 0.425), goal = map_.cellAtWorld(4.425, 2.625);
+    const auto start = map_.worldToCell({0.425, 0.425}), goal = map_.worldToCell({4.425, 2.625});
     EXPECT_EQ(eaci_test::routeDefect(map_, path, *start, *goal), "");
   }
 

@@ -41,7 +41,7 @@ class PlannerNode : public ::testing::Test {
   }
 
   bool freeAt(double x, double y) const {
-    const auto cell = map_.cellAtWorld(x, y);
+    const auto cell = map_.worldToCell({x, y});
     return cell && map_.cells[static_cast<std::size_t>(cell->row) * map_.width + cell->col] == eaci::kFreeValue;
   }
 

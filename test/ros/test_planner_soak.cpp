@@ -66,11 +66,11 @@ double residentMiB(int pid) {
 }
 
 geometry_msgs::PoseStamped pose(const eaci::OccupancyMap& map, eaci::Cell cell, double dx, double dy) {
-  const eaci::Point2 centre = map.worldAtCell(cell);
+  const Eigen::Vector2d centre = map.cellToWorld(cell);
   geometry_msgs::PoseStamped p;
   p.header.frame_id = "map";
-  p.pose.position.x = centre.x + dx * map.resolution;
-  p.pose.position.y = centre.y + dy * map.resolution;
+  p.pose.position.x = centre.x() + dx * map.resolution;
+  p.pose.position.y = centre.y() + dy * map.resolution;
   p.pose.orientation.w = 1.0;
   return p;
 }

@@ -22,7 +22,7 @@ struct Watch {
   std::string first_collision;
 
   bool obstacleAt(double x, double y) const {
-    const auto cell = map.cellAtWorld(x, y);
+    const auto cell = map.worldToCell({x, y});
     return !cell || map.cells[static_cast<std::size_t>(cell->row) * map.width + cell->col] != eaci::kFreeValue;
   }
 

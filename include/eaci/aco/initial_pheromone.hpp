@@ -1,6 +1,8 @@
 // Non-uniform initial pheromone between consecutive islands (Eq. 18-22).
 #pragma once
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,18 +19,20 @@ namespace eaci {
 struct Line {
   double a = 0.0, b = 0.0, c = 0.0;
 
-  static Line through(Point2 p, Point2 q) { return Line{q.y - p.y, p.x - q.x, q.x * p.y - p.x * q.y}; }
+  static Line through(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+    return Line{q.y() - p.y(), p.x() - q.x(), q.x() * p.y() - p.x() * q.y()};
+  }
 
   // |A x + B y + C| / sqrt(A^2 + B^2): distance of a point from the line.
-  double distanceTo(Point2 p) const { return std::abs(a * p.x + b * p.y + c) / std::hypot(a, b); }
+  double distanceTo(const Eigen::Vector2d& p) const { return std::abs(a * p.x() + b * p.y() + c) / std::hypot(a, b); }
 };
 
 // Eq. 18-20: pheromone of edge i -> j of a favourable region, the inverse distance of the
 // edge midpoint from the line through the region's islands; if the midpoint is on the
 // line, the inverse distance of node i; if i is on the line too, +infinity.
-inline double regionEdgePheromone(const Line& line, Point2 from, Point2 to) {
+inline double regionEdgePheromone(const Line& line, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
   constexpr double kOnLine = 1e-12;
-  const Point2 mid{(from.x + to.x) / 2.0, (from.y + to.y) / 2.0};
+  const Eigen::Vector2d mid = (from + to) / 2.0;
   const double d_mid = line.distanceTo(mid);
   if (d_mid > kOnLine) return 1.0 / d_mid;
   const double d_from = line.distanceTo(from);

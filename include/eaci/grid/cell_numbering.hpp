@@ -1,6 +1,8 @@
 // The paper's serial numbering and cell-centre coordinates (Eq. 1-4).
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstdint>
 
 #include "eaci/grid/cell.hpp"
@@ -18,15 +20,10 @@ inline Cell cellFromSerial(std::int64_t g, int width) {
   return Cell{static_cast<int>(row), static_cast<int>(g - 1 - row * width)};
 }
 
-struct Point2 {
-  double x = 0.0;
-  double y = 0.0;
-};
-
 // Eq. 3-4: centre of the cell, origin at the bottom-left corner of the map, y up,
 // cell size a. With 1-based r, c: x = (c - 0.5) a, y = (H - r + 0.5) a.
-inline Point2 cellCentre(Cell c, int height, double cell_size = 1.0) {
-  return Point2{(c.col + 0.5) * cell_size, (height - c.row - 0.5) * cell_size};
+inline Eigen::Vector2d cellCentre(Cell c, int height, double cell_size = 1.0) {
+  return {(c.col + 0.5) * cell_size, (height - c.row - 0.5) * cell_size};
 }
 
 }  // namespace eaci

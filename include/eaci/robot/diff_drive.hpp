@@ -11,6 +11,9 @@
 // positive when the turning centre lies on the robot's left.
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,10 +25,11 @@ namespace eaci::robot {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// A planar pose: position in metres, orientation's angle() the yaw in radians,
+// counter-clockwise from +x, in (-pi, pi].
 struct Pose2 {
-  double x = 0.0;
-  double y = 0.0;
-  double yaw = 0.0;  // radians, counter-clockwise from +x, in (-pi, pi]
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  Eigen::Rotation2Dd orientation = Eigen::Rotation2Dd(0.0);
 };
 
 // Linear speeds of the wheels' contact points, m/s.
@@ -118,21 +122,21 @@ inline WheelSpeeds limitWheelAcceleration(const WheelSpeeds& current, const Whee
 }
 
 // Exact pose after moving with constant (v, omega) for dt: an arc of radius v/omega,
-//   x' = x + v/omega (sin(yaw + omega dt) - sin yaw),  y' = y - v/omega (cos(yaw + omega dt) - cos yaw),
+//   x' = x + v/omega (sin(yaw + omega dt) - sin yaw),  y' = y + v/omega (cos yaw - cos(yaw + omega dt)),
 // or a straight line when |omega| < 1e-9. Yaw is normalised to (-pi, pi].
 inline Pose2 integrate(const Pose2& pose, double v, double omega, double dt) {
-  const double yaw_end = pose.yaw + omega * dt;
+  const double yaw = pose.orientation.angle();
+  const double yaw_end = yaw + omega * dt;
   Pose2 next;
   if (std::abs(omega) < 1e-9) {
-    const double mid = pose.yaw + omega * dt / 2.0;
-    next.x = pose.x + v * dt * std::cos(mid);
-    next.y = pose.y + v * dt * std::sin(mid);
+    const double mid = yaw + omega * dt / 2.0;
+    next.position = pose.position + v * dt * Eigen::Vector2d(std::cos(mid), std::sin(mid));
   } else {
     const double radius = v / omega;
-    next.x = pose.x + radius * (std::sin(yaw_end) - std::sin(pose.yaw));
-    next.y = pose.y - radius * (std::cos(yaw_end) - std::cos(pose.yaw));
+    next.position =
+        pose.position + radius * Eigen::Vector2d(std::sin(yaw_end) - std::sin(yaw), std::cos(yaw) - std::cos(yaw_end));
   }
-  next.yaw = normalizeAngle(yaw_end);
+  next.orientation = Eigen::Rotation2Dd(normalizeAngle(yaw_end));
   return next;
 }
 

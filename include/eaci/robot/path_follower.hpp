@@ -10,6 +10,8 @@
 // of a grid path) are smoothed by the carrot.
 #pragma once
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -24,11 +26,6 @@
 #include "eaci/robot/pid.hpp"
 
 namespace eaci::robot {
-
-struct Point2 {
-  double x = 0.0;
-  double y = 0.0;
-};
 
 enum class FollowerState { kIdle, kRotating, kDriving, kArrived };
 
@@ -85,21 +82,27 @@ inline void validate(const PathFollowerParams& p) {
   if (!error.empty()) throw std::invalid_argument(error);
 }
 
-inline double distance(const Point2& a, const Point2& b) { return std::hypot(b.x - a.x, b.y - a.y); }
+// Euclidean distance (std::hypot: no overflow or underflow on the way).
+inline double distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  return std::hypot(d.x(), d.y());
+}
+
+// Bearing of `to` seen from `from`: radians counter-clockwise from +x, in [-pi, pi].
+inline double bearing(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  const Eigen::Vector2d d = to - from;
+  return std::atan2(d.y(), d.x());
+}
 
 // Heading error to `target`: its bearing from the robot minus the robot's yaw, in (-pi, pi].
-inline double headingErrorTo(const Pose2& pose, const Point2& target) {
-  const double dx = target.x - pose.x;
-  const double dy = target.y - pose.y;
-  if (dx == 0.0 && dy == 0.0) return 0.0;
-  return normalizeAngle(std::atan2(dy, dx) - pose.yaw);
+inline double headingErrorTo(const Pose2& pose, const Eigen::Vector2d& target) {
+  if (target - pose.position == Eigen::Vector2d::Zero()) return 0.0;
+  return normalizeAngle(bearing(pose.position, target) - pose.orientation.angle());
 }
 
 // Turn angle at the middle one of three points, radians in [0, pi].
-inline double turnAngle(const Point2& a, const Point2& b, const Point2& c) {
-  const double in = std::atan2(b.y - a.y, b.x - a.x);
-  const double out = std::atan2(c.y - b.y, c.x - b.x);
-  return std::abs(normalizeAngle(out - in));
+inline double turnAngle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return std::abs(normalizeAngle(bearing(b, c) - bearing(a, b)));
 }
 
 class PathFollower {
@@ -109,10 +112,10 @@ class PathFollower {
 
   // New path (odom/map frame) and optional goal yaw; progress and PIDs start afresh.
   // Non-finite points and repeats of the previous point are dropped.
-  void setPath(const std::vector<Point2>& path, std::optional<double> goal_yaw = std::nullopt) {
+  void setPath(const std::vector<Eigen::Vector2d>& path, std::optional<double> goal_yaw = std::nullopt) {
     clear();
-    for (const Point2& p : path) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    for (const Eigen::Vector2d& p : path) {
+      if (!p.allFinite()) continue;
       if (!path_.empty() && distance(path_.back(), p) < 1e-9) continue;
       arc_.push_back(path_.empty() ? 0.0 : arc_.back() + distance(path_.back(), p));
       path_.push_back(p);
@@ -131,7 +134,7 @@ class PathFollower {
     next_stop_ = 0;
     at_goal_position_ = false;
     state_ = FollowerState::kIdle;
-    carrot_ = {};
+    carrot_.setZero();
     distance_pid_.reset();
     heading_pid_.reset();
   }
@@ -140,8 +143,8 @@ class PathFollower {
   FollowerCommand compute(const Pose2& pose, double dt) {
     if (path_.empty()) return command(0.0, 0.0, FollowerState::kIdle);
     if (state_ == FollowerState::kArrived) return command(0.0, 0.0, FollowerState::kArrived);
-    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) return {0.0, 0.0, state_};
-    const Point2 here{pose.x, pose.y};
+    if (!pose.position.allFinite() || !std::isfinite(pose.orientation.angle())) return {0.0, 0.0, state_};
+    const Eigen::Vector2d& here = pose.position;
     if (distance(here, path_.back()) <= params_.goal_tolerance) at_goal_position_ = true;
     if (at_goal_position_) return alignFinalYaw(pose, dt);
     passReachedStops(here);
@@ -154,11 +157,11 @@ class PathFollower {
   }
 
   FollowerState state() const { return state_; }
-  const std::vector<Point2>& path() const { return path_; }
+  const std::vector<Eigen::Vector2d>& path() const { return path_; }
   std::optional<double> goalYaw() const { return goal_yaw_; }
   double progress() const { return progress_; }          // m along the path, never decreasing
   std::size_t nextStop() const { return next_stop_; }    // index of the next corner (or the goal)
-  const Point2& carrot() const { return carrot_; }       // the last target point
+  const Eigen::Vector2d& carrot() const { return carrot_; }     // the last target point
   const PathFollowerParams& params() const { return params_; }
 
  private:
@@ -189,7 +192,7 @@ class PathFollower {
     return k;
   }
 
-  void passReachedStops(const Point2& here) {
+  void passReachedStops(const Eigen::Vector2d& here) {
     while (next_stop_ + 1 < path_.size() && distance(here, path_[next_stop_]) <= params_.waypoint_tolerance) {
       progress_ = std::max(progress_, arc_[next_stop_]);
       next_stop_ = stopAfter(next_stop_);
@@ -200,7 +203,7 @@ class PathFollower {
 
   // Progress moves to the robot's nearest point on the path between the current progress
   // and min(progress + lookahead, next stop): forward only, never past an unreached stop.
-  void advanceProgress(const Point2& here) {
+  void advanceProgress(const Eigen::Vector2d& here) {
     const double from = progress_;
     const double to = std::min(progress_ + params_.lookahead_distance, arc_[next_stop_]);
     double best_distance = distance(here, pointAt(from));
@@ -216,21 +219,21 @@ class PathFollower {
   }
 
   // Arc length of the point of segment j nearest to `p`.
-  double projectOnSegment(const Point2& p, std::size_t j) const {
-    const Point2& a = path_[j];
-    const Point2& b = path_[j + 1];
+  double projectOnSegment(const Eigen::Vector2d& p, std::size_t j) const {
+    const Eigen::Vector2d& a = path_[j];
+    const Eigen::Vector2d& b = path_[j + 1];
     const double length = arc_[j + 1] - arc_[j];
-    const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (length * length);
+    const double t = (p - a).dot(b - a) / (length * length);
     return arc_[j] + std::clamp(t, 0.0, 1.0) * length;
   }
 
   // The point at arc length s along the path (clamped to its ends).
-  Point2 pointAt(double s) const {
+  Eigen::Vector2d pointAt(double s) const {
     if (s <= 0.0 || path_.size() == 1) return path_.front();
     if (s >= arc_.back()) return path_.back();
     const std::size_t j = static_cast<std::size_t>(std::upper_bound(arc_.begin(), arc_.end(), s) - arc_.begin()) - 1;
     const double t = (s - arc_[j]) / (arc_[j + 1] - arc_[j]);
-    return {path_[j].x + t * (path_[j + 1].x - path_[j].x), path_[j].y + t * (path_[j + 1].y - path_[j].y)};
+    return path_[j] + t * (path_[j + 1] - path_[j]);
   }
 
   FollowerCommand rotate(double heading_error, double dt) {
@@ -254,7 +257,7 @@ class PathFollower {
   // At the last point: turn in place to the goal yaw when asked to, then arrive.
   FollowerCommand alignFinalYaw(const Pose2& pose, double dt) {
     if (!goal_yaw_ || !params_.align_final_yaw) return command(0.0, 0.0, FollowerState::kArrived);
-    const double yaw_error = normalizeAngle(*goal_yaw_ - pose.yaw);
+    const double yaw_error = normalizeAngle(*goal_yaw_ - pose.orientation.angle());
     if (std::abs(yaw_error) < params_.yaw_tolerance) return command(0.0, 0.0, FollowerState::kArrived);
     return rotate(yaw_error, dt);
   }
@@ -266,7 +269,7 @@ class PathFollower {
   PathFollowerParams params_;
   Pid distance_pid_;
   Pid heading_pid_;
-  std::vector<Point2> path_;
+  std::vector<Eigen::Vector2d> path_;
   std::vector<double> arc_;  // arc length at each waypoint
   std::vector<bool> stop_;   // corners sharper than the in-place threshold, and the goal
   std::optional<double> goal_yaw_;
@@ -274,7 +277,7 @@ class PathFollower {
   std::size_t next_stop_ = 0;
   bool at_goal_position_ = false;
   FollowerState state_ = FollowerState::kIdle;
-  Point2 carrot_;
+  Eigen::Vector2d carrot_ = Eigen::Vector2d::Zero();
 };
 
 }  // namespace eaci::robot

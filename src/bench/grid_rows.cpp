@@ -1,15 +1,8 @@
-#include "parameters_json.hpp"
+#include "grid_rows.hpp"
 
-#include <variant>
+#include <vector>
 
 namespace eaci_bench {
-
-nlohmann::json toJson(const eaci::Parameters& p) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const auto& [name, value] : eaci::parameterValues(p))
-    std::visit([&out, &name = name](const auto& v) { out[name] = v; }, value);
-  return out;
-}
 
 nlohmann::json gridRows(const eaci::OccupancyMap& map) {
   const eaci::GridView view = map.view();

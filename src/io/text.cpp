@@ -1,0 +1,32 @@
+#include "eaci/io/text.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace eaci {
+
+std::string oneLine(const std::string& text) {
+  std::string out;
+  bool space = false;
+  for (char ch : text) {
+    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+    if (ch == ' ' && (space || out.empty())) continue;
+    space = ch == ' ';
+    out += ch;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+std::string formatNumber(double value, int max_decimals) {
+  std::ostringstream s;
+  s << std::setprecision(max_decimals) << std::fixed << value;
+  std::string text = s.str();
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+}  // namespace eaci
