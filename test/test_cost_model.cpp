@@ -258,3 +258,10 @@ TEST(CostModel, DefaultEaciIsCloseToTheCheapestRouteOnInflatedCostmaps) {
   RecordProperty("median_gap_percent", std::to_string(100 * median));
   RecordProperty("worst_gap_percent", std::to_string(100 * gaps.back()));
 }
+
+TEST(CostModel, RouteCostOfCellsThatAreNotNeighboursIsInfinite) {
+  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(3, std::vector<int>(3, 0)), false);
+  EXPECT_DOUBLE_EQ(eaci::routeCost(grid, {Cell{0, 0}, Cell{1, 1}, Cell{1, 2}}), std::sqrt(2.0) + 1.0);
+  EXPECT_TRUE(std::isinf(eaci::routeCost(grid, {Cell{0, 0}, Cell{0, 2}})));
+  EXPECT_TRUE(std::isinf(eaci::routeCost(grid, {Cell{0, 0}, Cell{0, 0}})));
+}

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
@@ -110,12 +111,15 @@ class CostGrid {
   std::array<double, kObstacle> cell_factor_{};  // (neutral + factor x c) / neutral by cost c
 };
 
-// A route's cost: the sum of its moves' costs (0 for a single cell). Consecutive cells must be
-// 8-neighbours.
+// A route's cost: the sum of its moves' costs (0 for a single cell); +infinity when two
+// consecutive cells are not 8-neighbours (not a route).
 inline double routeCost(const CostGrid& grid, const CellPath& route) {
   double cost = 0.0;
-  for (std::size_t k = 1; k < route.size(); ++k)
-    cost += grid.moveCost(route[k - 1], directionBetween(route[k - 1], route[k]));
+  for (std::size_t k = 1; k < route.size(); ++k) {
+    const int dir = directionBetween(route[k - 1], route[k]);
+    if (dir < 0) return std::numeric_limits<double>::infinity();
+    cost += grid.moveCost(route[k - 1], dir);
+  }
   return cost;
 }
 
