@@ -13,6 +13,7 @@
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/metrics/path_metrics.hpp"
+#include "eaci/path/smoothing.hpp"
 #include "eaci/search/astar.hpp"
 
 namespace eaci {
@@ -57,7 +58,11 @@ struct PlanResult {
   PlanStatus status = PlanStatus::kInvalidInput;
   std::string error;               // one line, empty on success
   Algorithm algorithm = Algorithm::kEaci;
-  CellPath path;                   // start first, goal last
+  CellPath path;                   // start first, goal last: the 8-connected route the search found
+  // With smooth_path: the corners of the smoothed route (start and goal included, joined by
+  // straight segments, path/smoothing.hpp); else the same cells as `path`.
+  CellPath smoothed_path;
+  double smoothed_length = std::numeric_limits<double>::infinity();  // cells, along smoothed_path
   double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost): L_k
   double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
   double total_turn_deg = 0.0;
@@ -157,8 +162,10 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   if (start == goal) {  // nothing to search: the route is the start cell itself
     r.status = PlanStatus::kSuccess;
     r.path = {start};
+    r.smoothed_path = r.path;
     r.cost = 0.0;
     r.length = 0.0;
+    r.smoothed_length = 0.0;
     r.islands = {start};
     return r;
   }
@@ -193,6 +200,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   r.cost = routeCost(grid, r.path);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
+  r.smoothed_path = params.smooth_path ? smoothRoute(grid, r.path) : r.path;
+  r.smoothed_length = pathLength(r.smoothed_path);
   return r;
 }
 

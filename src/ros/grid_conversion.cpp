@@ -96,28 +96,31 @@ std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell
 }
 
 nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
-                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp) {
+                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation) {
   nav_msgs::Path path;
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
   if (cells.empty()) return path;
-  std::vector<Eigen::Vector2d> points;
-  points.reserve(cells.size());
-  for (const eaci::Cell& c : cells) points.push_back(frame.cellToWorld(c));
-  points.front() = {start.pose.position.x, start.pose.position.y};
-  if (cells.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
+  std::vector<Eigen::Vector2d> corners;
+  corners.reserve(cells.size());
+  for (const eaci::Cell& c : cells) corners.push_back(frame.cellToWorld(c));
+  corners.front() = {start.pose.position.x, start.pose.position.y};
+  if (cells.size() > 1) corners.back() = {goal.pose.position.x, goal.pose.position.y};
+  // A smoothed route's long segments get a pose at least every 1.5 cells (a diagonal step stays one).
+  const std::vector<Eigen::Vector2d> points = eaci::densify(corners, 1.5 * frame.resolution);
+  const std::vector<double> headings =
+      eaci::orientPoints(points, tf2::getYaw(start.pose.orientation), tf2::getYaw(goal.pose.orientation), orientation);
   for (std::size_t k = 0; k < points.size(); ++k) {
     geometry_msgs::PoseStamped pose;
     pose.header = path.header;
     pose.pose.position.x = points[k].x();
     pose.pose.position.y = points[k].y();
     if (k + 1 < points.size()) {
-      const Eigen::Vector2d towards_next = points[k + 1] - points[k];
       tf2::Quaternion q;
-      q.setRPY(0, 0, std::atan2(towards_next.y(), towards_next.x()));
+      q.setRPY(0, 0, headings[k]);
       pose.pose.orientation = tf2::toMsg(q);
     } else {
-      pose.pose.orientation = goal.pose.orientation;
+      pose.pose.orientation = goal.pose.orientation;  // exactly the goal's, not via the yaw
     }
     path.poses.push_back(pose);
   }

@@ -14,6 +14,7 @@
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/grid/map_frame.hpp"
 #include "eaci/io/occupancy_map.hpp"
+#include "eaci/path/orientation.hpp"
 
 namespace eaci_ros {
 
@@ -40,10 +41,13 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
 // Nearest free cell to `cell` within `radius_cells` (Euclidean, in cells), `cell` itself if free.
 std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells);
 
-// The route as poses in the map frame: the start pose's position first, cell centres, the
-// goal pose (position and orientation) last; each pose faces the next one.
+// The route as poses in the map frame: the start pose's position first, cell centres (with
+// extra poses along long straight segments of a smoothed route), the goal pose (position and
+// orientation) last; headings as global_planner's orientation_mode sets them (default
+// forward: each pose faces the next one).
 nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
-                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp);
+                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp,
+                      eaci::OrientationMode orientation = eaci::OrientationMode::kForward);
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapFrame& frame, const ros::Time& stamp);

@@ -83,7 +83,7 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
     target.pose.position.x = centre.x();
     target.pose.position.y = centre.y();
   }
-  plan.path = toPath(plan.result.path, frame, start, target, ros::Time::now());
+  plan.path = toPath(plan.result.smoothed_path, frame, start, target, ros::Time::now(), options.orientation_mode);
   plan.ok = true;
   return plan;
 }

@@ -42,6 +42,7 @@ T readScalar(const ros::NodeHandle& nh, const std::string& name, T fallback) {
 
 void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlannerOptions& options) {
   params.allow_unknown = true;  // the ROS default, as navfn and global_planner
+  params.smooth_path = true;    // robots drive the smoothed route
   if (nh.hasParam("obstacle_cost") && !nh.hasParam("lethal_cost"))
     params.lethal_cost = readScalar<int>(nh, "obstacle_cost", params.lethal_cost);
   for (const std::string& name : eaci::parameterNames()) {
@@ -66,6 +67,15 @@ void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlan
   options.max_planning_time = readScalar<double>(nh, "max_planning_time", options.max_planning_time);
   options.visualize_pheromone = readScalar<bool>(nh, "visualize_pheromone", options.visualize_pheromone);
   options.robot_radius = readScalar<double>(nh, "robot_radius", options.robot_radius);
+  if (nh.hasParam("orientation_mode")) {
+    XmlRpc::XmlRpcValue mode;
+    nh.getParam("orientation_mode", mode);
+    try {
+      options.orientation_mode = eaci::orientationModeFromString(asText(nh.resolveName("orientation_mode"), mode));
+    } catch (const std::invalid_argument& e) {
+      throw eaci::ParameterError(nh.resolveName("orientation_mode") + ": " + e.what());
+    }
+  }
 
   if (!std::isfinite(options.default_tolerance) || options.default_tolerance < 0)
     throw eaci::ParameterError(nh.resolveName("default_tolerance") + " must be a distance >= 0");

@@ -58,6 +58,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   }
   j["path"] = std::move(path);
   j["path_xy"] = std::move(path_xy);
+  j["smoothed_path"] = r.smoothed_path;  // the corners of the smoothed route (= path without smooth_path)
+  j["smoothed_length"] = r.success() ? json(r.smoothed_length) : json(nullptr);
 
   j["iterations_to_converge"] = r.iterations_to_converge;
   j["iterations_run"] = r.iterations_run;

@@ -50,6 +50,10 @@ struct Parameters {
   double cost_factor = 3.0;
   int lethal_cost = 253;      // costmap_2d INSCRIBED_INFLATED_OBSTACLE
   bool allow_unknown = false; // the ROS layer defaults to true, as navfn and global_planner do
+  // After the search, shortcut the 8-connected route by line of sight (path/smoothing.hpp):
+  // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
+  // turns it on.
+  bool smooth_path = false;
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
   double island_spacing_max = 6.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
@@ -195,6 +199,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
                        [](const Parameters& p) { return ParameterValue{p.cost_factor}; }}},
       {"lethal_cost", {[](Parameters& p, const std::string& v) { p.lethal_cost = parseInt("lethal_cost", v); },
                        [](const Parameters& p) { return ParameterValue{std::int64_t{p.lethal_cost}}; }}},
+      {"smooth_path", {[](Parameters& p, const std::string& v) { p.smooth_path = parseBool("smooth_path", v); },
+                       [](const Parameters& p) { return ParameterValue{p.smooth_path}; }}},
       {"allow_unknown",
        {[](Parameters& p, const std::string& v) { p.allow_unknown = parseBool("allow_unknown", v); },
         [](const Parameters& p) { return ParameterValue{p.allow_unknown}; }}},

@@ -1,0 +1,111 @@
+// Poses along a route: points every `spacing` along its segments, and headings set as
+// global_planner's orientation_mode sets them (none, forward, interpolate,
+// forward_then_interpolate), so move_base users get the behaviour they know.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eaci {
+
+enum class OrientationMode { kNone, kForward, kInterpolate, kForwardThenInterpolate };
+
+inline const char* toString(OrientationMode mode) {
+  switch (mode) {
+    case OrientationMode::kNone: return "none";
+    case OrientationMode::kForward: return "forward";
+    case OrientationMode::kInterpolate: return "interpolate";
+    case OrientationMode::kForwardThenInterpolate: return "forward_then_interpolate";
+  }
+  return "?";
+}
+
+// By name, or global_planner's number (0 none, 1 forward, 2 interpolate, 3 forward_then_interpolate);
+// std::invalid_argument otherwise.
+inline OrientationMode orientationModeFromString(const std::string& text) {
+  for (auto mode : {OrientationMode::kNone, OrientationMode::kForward, OrientationMode::kInterpolate,
+                    OrientationMode::kForwardThenInterpolate})
+    if (text == toString(mode) || text == std::to_string(static_cast<int>(mode))) return mode;
+  throw std::invalid_argument("'" + text + "' is not one of: none, forward, interpolate, forward_then_interpolate (or 0-3)");
+}
+
+// The polyline through `corners` with a point at most `spacing` after the previous one on
+// every segment; the corners themselves are kept.
+inline std::vector<Eigen::Vector2d> densify(const std::vector<Eigen::Vector2d>& corners, double spacing) {
+  std::vector<Eigen::Vector2d> points;
+  if (corners.empty()) return points;
+  points.push_back(corners.front());
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    const Eigen::Vector2d a = corners[k - 1], b = corners[k];
+    const double length = (b - a).norm();
+    const int pieces = spacing > 0 ? std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))) : 1;
+    for (int p = 1; p <= pieces; ++p) points.push_back(a + (b - a) * (static_cast<double>(p) / pieces));
+  }
+  return points;
+}
+
+namespace detail {
+inline double shortestAngle(double from, double to) { return std::remainder(to - from, 2.0 * M_PI); }
+
+// Headings from index `first` to `last` turn evenly from heading[first] to heading[last].
+inline void interpolateHeadings(std::vector<double>& heading, std::size_t first, std::size_t last) {
+  const double turn = shortestAngle(heading[first], heading[last]);
+  for (std::size_t k = first + 1; k < last; ++k)
+    heading[k] = heading[first] + turn * static_cast<double>(k - first) / static_cast<double>(last - first);
+}
+}  // namespace detail
+
+// Heading (rad) of every point: the first and last are the start's and goal's own headings
+// (except forward, whose first pose faces the second); in between, as global_planner's
+// OrientationFilter does it:
+//   none                      heading 0;
+//   forward                   each point faces the next one;
+//   interpolate               turning evenly from the start heading to the goal heading;
+//   forward_then_interpolate  forward, then, over the final stretch whose direction stays within
+//                             0.35 rad of the last segment's, turning evenly to the goal heading.
+inline std::vector<double> orientPoints(const std::vector<Eigen::Vector2d>& points, double start_yaw, double goal_yaw,
+                                        OrientationMode mode) {
+  const std::size_t n = points.size();
+  std::vector<double> heading(n, 0.0);
+  if (n == 0) return heading;
+  const auto faceNext = [&] {
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const Eigen::Vector2d d = points[k + 1] - points[k];
+      heading[k] = d.squaredNorm() > 0 ? std::atan2(d.y(), d.x()) : (k > 0 ? heading[k - 1] : start_yaw);
+    }
+  };
+  switch (mode) {
+    case OrientationMode::kNone:
+      heading.front() = start_yaw;
+      break;
+    case OrientationMode::kForward:
+      faceNext();
+      break;
+    case OrientationMode::kInterpolate:
+      heading.front() = start_yaw;
+      heading.back() = goal_yaw;
+      detail::interpolateHeadings(heading, 0, n - 1);
+      break;
+    case OrientationMode::kForwardThenInterpolate: {
+      faceNext();
+      if (n >= 3) {
+        std::size_t first = n - 3;  // global_planner: from the third-last pose back while straight
+        const double last_direction = heading[n - 3];
+        while (first > 0 && std::abs(detail::shortestAngle(heading[first - 1], last_direction)) <= 0.35) --first;
+        heading.front() = start_yaw;
+        heading.back() = goal_yaw;
+        detail::interpolateHeadings(heading, first, n - 1);
+      }
+      break;
+    }
+  }
+  heading.back() = goal_yaw;
+  return heading;
+}
+
+}  // namespace eaci

@@ -1,0 +1,93 @@
+// A drivable route from a grid route: line-of-sight shortcuts over the 8-connected cells
+// (beyond the paper; off for its benchmarks). A shortcut is taken only when the straight
+// segment touches no obstacle cell, corners included, and costs no more than the stretch of
+// route it replaces, so the smoothed route is never costlier and never nearer a lethal cell.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <limits>
+
+#include "eaci/grid/cost_grid.hpp"
+
+namespace eaci {
+
+// The cells a straight segment between two cell centres passes through, each with the length
+// of the segment inside it (cells it only touches at a corner come with length 0), in order.
+// `visit(cell, length)` returns false to stop the walk early.
+template <class Visit>
+void traverseSegment(Cell from, Cell to, Visit&& visit) {
+  const double dx = to.col - from.col, dy = to.row - from.row;
+  const double total = std::hypot(dx, dy);
+  const int step_col = dx > 0 ? 1 : -1, step_row = dy > 0 ? 1 : -1;
+  // Parameter t in [0, 1] along the segment; cell borders lie half a cell from the centres.
+  const double t_per_col = dx != 0 ? 1.0 / std::abs(dx) : std::numeric_limits<double>::infinity();
+  const double t_per_row = dy != 0 ? 1.0 / std::abs(dy) : std::numeric_limits<double>::infinity();
+  double next_col_t = 0.5 * t_per_col, next_row_t = 0.5 * t_per_row, t = 0.0;
+  Cell cell = from;
+  constexpr double kSame = 1e-12;
+  for (;;) {
+    const double exit_t = std::min({next_col_t, next_row_t, 1.0});
+    if (!visit(cell, (exit_t - t) * total)) return;
+    if (exit_t >= 1.0) return;
+    t = exit_t;
+    if (std::abs(next_col_t - next_row_t) < kSame) {  // through a corner: both side cells are touched
+      if (!visit(Cell{cell.row, cell.col + step_col}, 0.0) || !visit(Cell{cell.row + step_row, cell.col}, 0.0)) return;
+      cell = Cell{cell.row + step_row, cell.col + step_col};
+      next_col_t += t_per_col;
+      next_row_t += t_per_row;
+    } else if (next_col_t < next_row_t) {
+      cell.col += step_col;
+      next_col_t += t_per_col;
+    } else {
+      cell.row += step_row;
+      next_row_t += t_per_row;
+    }
+  }
+}
+
+// The cost of driving the straight segment: each cell's length inside it, weighted like a move
+// into that cell (CostGrid::moveCostInto per unit length); +infinity if it touches an obstacle
+// or leaves the map.
+inline double segmentCost(const CostGrid& grid, Cell from, Cell to) {
+  double cost = 0.0;
+  traverseSegment(from, to, [&](Cell c, double length) {
+    if (!grid.isFree(c)) {
+      cost = std::numeric_limits<double>::infinity();
+      return false;
+    }
+    cost += length * grid.moveCostInto(grid.index(c), 0);  // direction 0: a straight move, length 1
+    return true;
+  });
+  return cost;
+}
+
+// Greedy string pulling: from each kept cell, the farthest later cell of the route reachable
+// by an allowed shortcut (the search stops at the first that is not). Returns the kept cells,
+// start and goal included; consecutive kept cells are joined by straight segments.
+// A route that is not 8-connected is returned as it is.
+inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route) {
+  if (route.size() < 3 || !std::isfinite(routeCost(grid, route))) return route;
+  const auto moveCost = [&](std::size_t k) {  // the move into route[k]
+    const int dir = directionBetween(route[k - 1], route[k]);
+    return dir < 0 ? std::numeric_limits<double>::infinity() : grid.moveCost(route[k - 1], dir);
+  };
+  CellPath kept{route.front()};
+  std::size_t i = 0;
+  while (i + 1 < route.size()) {
+    std::size_t best = i + 1;
+    double stretch_cost = moveCost(i + 1);
+    for (std::size_t j = i + 2; j < route.size(); ++j) {
+      stretch_cost += moveCost(j);
+      if (segmentCost(grid, route[i], route[j]) > stretch_cost + 1e-9) break;
+      best = j;
+    }
+    kept.push_back(route[best]);
+    i = best;
+  }
+  return kept;
+}
+
+}  // namespace eaci

@@ -1,0 +1,102 @@
+// Line-of-sight smoothing and pose orientation, against hand-computed routes and headings.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "eaci/path/orientation.hpp"
+#include "eaci/path/smoothing.hpp"
+#include "eaci/planner.hpp"
+#include "eaci/search/astar.hpp"
+
+using eaci::Cell;
+using eaci::CellPath;
+using eaci::CostGrid;
+
+namespace {
+CostGrid open(int rows, int cols) { return CostGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false); }
+}  // namespace
+
+TEST(Smoothing, AStaircaseOnAnOpenGridBecomesOneSegment) {
+  const CostGrid grid = open(5, 9);
+  // (0,0) -> (4,8) as 4 diagonals then 4 straights: 4 sqrt2 + 4 = 9.657; the line is sqrt(80) = 8.944.
+  const CellPath route{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4}, {4, 5}, {4, 6}, {4, 7}, {4, 8}};
+  const CellPath smoothed = eaci::smoothRoute(grid, route);
+  ASSERT_EQ(smoothed, (CellPath{{0, 0}, {4, 8}}));
+  EXPECT_NEAR(eaci::pathLength(smoothed), std::sqrt(80.0), 1e-12);
+}
+
+TEST(Smoothing, NeverCutsAcrossAnObstacleCorner) {
+  // The segment (0,0) -> (2,2) passes exactly through the corners of cells (0,1)/(1,0) and
+  // (1,2)/(2,1); with (1,2) blocked no shortcut past (1,1) is allowed.
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0}, {0, 0, 1}, {0, 0, 0}}, false);
+  const CellPath route{{0, 0}, {1, 1}, {2, 1}, {2, 2}};
+  const CellPath smoothed = eaci::smoothRoute(grid, route);
+  for (std::size_t k = 1; k < smoothed.size(); ++k)
+    EXPECT_TRUE(std::isfinite(eaci::segmentCost(grid, smoothed[k - 1], smoothed[k])));
+  EXPECT_TRUE(std::isinf(eaci::segmentCost(grid, Cell{0, 0}, Cell{2, 2})));
+  EXPECT_EQ(smoothed.front(), (Cell{0, 0}));
+  EXPECT_EQ(smoothed.back(), (Cell{2, 2}));
+}
+
+TEST(Smoothing, TakesNoShortcutThatCostsMoreThanTheRoute) {
+  // The centre cell costs 200: entering it costs 1 + 3 x 200 / 50 = 13 per cell of length. The
+  // route around it costs 4; the diagonal (0,0) -> (2,2) would cost 0.707 + 1.414 x 13 + 0.707.
+  CostGrid grid = open(3, 3);
+  grid.setCost(Cell{1, 1}, 200);
+  const CellPath route{{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 2}};
+  ASSERT_DOUBLE_EQ(eaci::routeCost(grid, route), 4.0);
+  EXPECT_NEAR(eaci::segmentCost(grid, Cell{0, 0}, Cell{2, 2}), std::sqrt(2.0) * (0.5 + 13.0 + 0.5), 1e-9);
+  const CellPath smoothed = eaci::smoothRoute(grid, route);
+  EXPECT_GT(smoothed.size(), 2u);
+  double cost = 0.0;
+  for (std::size_t k = 1; k < smoothed.size(); ++k) cost += eaci::segmentCost(grid, smoothed[k - 1], smoothed[k]);
+  EXPECT_LE(cost, 4.0 + 1e-9);
+}
+
+TEST(Smoothing, PlannerSmoothsOnlyWhenAsked) {
+  const CostGrid grid = open(10, 10);
+  eaci::Parameters p;
+  const auto plain = eaci::plan(grid, Cell{0, 0}, Cell{9, 5}, eaci::Algorithm::kAStar, p);
+  ASSERT_TRUE(plain.success());
+  EXPECT_EQ(plain.smoothed_path, plain.path);
+  p.smooth_path = true;
+  const auto smooth = eaci::plan(grid, Cell{0, 0}, Cell{9, 5}, eaci::Algorithm::kAStar, p);
+  EXPECT_EQ(smooth.path, plain.path);  // the search's route is unchanged
+  EXPECT_EQ(smooth.smoothed_path, (CellPath{{0, 0}, {9, 5}}));
+  EXPECT_NEAR(smooth.smoothed_length, std::sqrt(81.0 + 25.0), 1e-12);
+}
+
+TEST(Orientation, ModesSetHeadingsAsGlobalPlannerDoes) {
+  // An L: east along y = 0, then north. Start heading 0.3, goal heading 2.0.
+  const std::vector<Eigen::Vector2d> pts{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}};
+  const double kEast = 0.0, kNorth = M_PI / 2;
+  using eaci::OrientationMode;
+  const auto forward = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kForward);
+  EXPECT_EQ(forward, (std::vector<double>{kEast, kEast, kNorth, kNorth, 2.0}));
+  const auto none = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kNone);
+  EXPECT_EQ(none, (std::vector<double>{0.3, 0.0, 0.0, 0.0, 2.0}));
+  const auto interpolate = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kInterpolate);
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(interpolate[static_cast<std::size_t>(k)], 0.3 + 1.7 * k / 4.0, 1e-12);
+  // forward_then_interpolate: the last straight stretch starts at index 2 (north), so headings
+  // 2..4 turn evenly from north to 2.0; before it, forward, with the start heading first.
+  const auto ftoi = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kForwardThenInterpolate);
+  EXPECT_DOUBLE_EQ(ftoi[0], 0.3);
+  EXPECT_DOUBLE_EQ(ftoi[1], kEast);
+  EXPECT_DOUBLE_EQ(ftoi[2], kNorth);
+  EXPECT_NEAR(ftoi[3], kNorth + (2.0 - kNorth) / 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(ftoi[4], 2.0);
+}
+
+TEST(Orientation, ModeNamesAndNumbers) {
+  EXPECT_EQ(eaci::orientationModeFromString("forward_then_interpolate"), eaci::OrientationMode::kForwardThenInterpolate);
+  EXPECT_EQ(eaci::orientationModeFromString("2"), eaci::OrientationMode::kInterpolate);
+  EXPECT_THROW(eaci::orientationModeFromString("sideways"), std::invalid_argument);
+}
+
+TEST(Orientation, DensifyKeepsCornersAndCapsTheSpacing) {
+  const auto pts = eaci::densify({{0, 0}, {3, 0}, {3, 1}}, 1.5);
+  ASSERT_EQ(pts.size(), 4u);  // (0,0) (1.5,0) (3,0) (3,1)
+  EXPECT_DOUBLE_EQ(pts[1].x(), 1.5);
+  EXPECT_DOUBLE_EQ(pts[3].y(), 1.0);
+}
