@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "eaci/metrics/path_metrics.hpp"
@@ -69,6 +71,26 @@ TEST(PathMetrics, MinClearanceIgnoresTheMapBorderAndIsInfiniteWithoutObstacles) 
   const CostGrid one = CostGrid::fromRows({{0, 0, 0}, {0, 0, 1}}, false);
   EXPECT_DOUBLE_EQ(eaci::minClearance(one, {{0, 0}}), std::sqrt(5.0));  // the border, 1 away, does not count
   EXPECT_EQ(eaci::minClearance(one, {}), std::numeric_limits<double>::infinity());
+}
+
+TEST(PathMetrics, MinClearanceEqualsABruteForceSearchOnRandomGrids) {
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int w = 1 + static_cast<int>(random() % 17), h = 1 + static_cast<int>(random() % 17);
+    const unsigned density = random() % 40;  // percent; some grids get no obstacle at all
+    CostGrid grid(w, h, false);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) grid.setBlocked(Cell{r, c}, random() % 100 < density);
+    CellPath route;
+    for (int n = static_cast<int>(random() % 6); n >= 0; --n)
+      route.push_back(Cell{static_cast<int>(random() % h), static_cast<int>(random() % w)});
+    double expected = std::numeric_limits<double>::infinity();
+    for (const Cell& a : route)
+      for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c)
+          if (grid.isBlocked(Cell{r, c})) expected = std::min(expected, std::hypot(r - a.row, c - a.col));
+    EXPECT_DOUBLE_EQ(eaci::minClearance(grid, route), expected) << "trial " << trial;
+  }
 }
 
 TEST(PathMetrics, MeanCellCostOfAHandBuiltCostGrid) {

@@ -4,10 +4,11 @@
 
 #include <Eigen/Core>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/cost_grid.hpp"
@@ -59,32 +60,76 @@ inline double totalTurnDegrees(const CellPath& path) {
 // map's border are not obstacles (the map says nothing about them). +infinity when the route
 // is empty or the grid has no obstacle; route cells off the grid are skipped.
 //
-// Per route cell the search goes outward ring by ring (Chebyshev distance r = 1, 2, ...): an
-// obstacle on ring r is at least r away, so the search stops at the first ring that cannot
-// beat the best distance found so far, this cell's or the route's.
+// Exact Euclidean distances in O(width x height), however far the obstacles are (a search
+// outward from each route cell costs the square of the clearance per cell): per column the
+// distance to the nearest obstacle in that column, then, on the rows the route visits, the
+// lower envelope of the parabolas (x - q)^2 + column_distance(q)^2 (Felzenszwalb and
+// Huttenlocher, "Distance Transforms of Sampled Functions", 2012).
 inline double minClearance(const CostGrid& grid, const CellPath& route) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  bool any_obstacle = false;
-  for (std::size_t i = 0; i < grid.cellCount() && !any_obstacle; ++i) any_obstacle = grid.isBlocked(grid.cellAt(i));
-  if (!any_obstacle) return kInfinity;
+  const int w = grid.width(), h = grid.height();
+  std::vector<bool> route_row(static_cast<std::size_t>(std::max(h, 0)), false);
+  for (const Cell& cell : route)
+    if (grid.contains(cell)) route_row[static_cast<std::size_t>(cell.row)] = true;
 
-  double best = kInfinity;  // over the route so far
-  for (const Cell& cell : route) {
-    if (!grid.contains(cell)) continue;
-    if (grid.isBlocked(cell)) return 0.0;
-    // The farthest ring that still touches the map.
-    const int last_ring = std::max({cell.row, grid.height() - 1 - cell.row, cell.col, grid.width() - 1 - cell.col});
-    auto consider = [&](int row, int col) {
-      const Cell other{row, col};
-      if (!grid.contains(other) || !grid.isBlocked(other)) return;
-      best = std::min(best, std::hypot(static_cast<double>(row - cell.row), static_cast<double>(col - cell.col)));
-    };
-    for (int r = 1; r <= last_ring && r < best; ++r) {
-      for (int dc = -r; dc <= r; ++dc) consider(cell.row - r, cell.col + dc), consider(cell.row + r, cell.col + dc);
-      for (int dr = -r + 1; dr <= r - 1; ++dr) consider(cell.row + dr, cell.col - r), consider(cell.row + dr, cell.col + r);
+  // Squared distance to the nearest obstacle in the same column, +infinity if none.
+  std::vector<double> column(grid.cellCount(), kInfinity);
+  auto at = [w](int row, int col) {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(w) + static_cast<std::size_t>(col);
+  };
+  auto square = [](int v) { return static_cast<double>(v) * static_cast<double>(v); };
+  for (int c = 0; c < w; ++c) {
+    double distance = kInfinity;
+    for (int r = 0; r < h; ++r) {
+      distance = grid.isBlocked(Cell{r, c}) ? 0.0 : distance + 1.0;
+      column[at(r, c)] = distance;
     }
+    distance = kInfinity;
+    for (int r = h - 1; r >= 0; --r) {
+      distance = grid.isBlocked(Cell{r, c}) ? 0.0 : distance + 1.0;
+      column[at(r, c)] = std::min(column[at(r, c)], distance);
+    }
+    for (int r = 0; r < h; ++r) column[at(r, c)] *= column[at(r, c)];
   }
-  return best;
+
+  // Per route row: squared distance to the nearest obstacle anywhere, from the lower envelope
+  // of the parabolas of the columns that have an obstacle.
+  std::vector<double> squared(static_cast<std::size_t>(std::max(w, 0)));
+  std::vector<int> apex(static_cast<std::size_t>(std::max(w, 0)));           // envelope parabolas' columns
+  std::vector<double> from(static_cast<std::size_t>(std::max(w, 0)) + 1);   // where each takes over
+  double best = kInfinity;
+  for (int r = 0; r < h; ++r) {
+    if (!route_row[static_cast<std::size_t>(r)]) continue;
+    const double* f = &column[at(r, 0)];
+    int k = -1;
+    for (int q = 0; q < w; ++q) {
+      if (!std::isfinite(f[q])) continue;
+      double s = -kInfinity;
+      while (k >= 0) {
+        const int p = apex[static_cast<std::size_t>(k)];
+        s = ((f[q] + square(q)) - (f[p] + square(p))) / (2.0 * (q - p));
+        if (s <= from[static_cast<std::size_t>(k)]) --k;
+        else break;
+      }
+      if (k < 0) s = -kInfinity;
+      ++k;
+      apex[static_cast<std::size_t>(k)] = q;
+      from[static_cast<std::size_t>(k)] = s;
+      from[static_cast<std::size_t>(k) + 1] = kInfinity;
+    }
+    for (int x = 0, j = 0; x < w; ++x) {
+      if (k < 0) {
+        squared[static_cast<std::size_t>(x)] = kInfinity;
+        continue;
+      }
+      while (from[static_cast<std::size_t>(j) + 1] < x) ++j;
+      const int q = apex[static_cast<std::size_t>(j)];
+      squared[static_cast<std::size_t>(x)] = square(x - q) + f[q];
+    }
+    for (const Cell& cell : route)
+      if (cell.row == r && grid.contains(cell)) best = std::min(best, squared[static_cast<std::size_t>(cell.col)]);
+  }
+  return std::sqrt(best);
 }
 
 // The mean cost 0..254 (CostGrid::cost) of the route's cells. NaN when the route is empty or
