@@ -427,6 +427,57 @@ TEST_F(CliTest, PngIsWritten) {
                  "--algorithm astar --png " + quote((dir_ / "no-such-dir" / "x.png").string()));
 }
 
+TEST_F(CliTest, JsonHasClearanceAndMeanCellCost) {
+  // A wall along row 0 and one block at (4, 3); A* from (2, 0) to (2, 6) runs straight along
+  // row 2: 2 cells from the wall and from the block, resolution 1 (a .txt matrix).
+  writeFile(tmp("wall.txt"),
+            "1 1 1 1 1 1 1\n"
+            "0 0 0 0 0 0 0\n"
+            "0 0 0 0 0 0 0\n"
+            "0 0 0 0 0 0 0\n"
+            "0 0 0 1 0 0 0\n");
+  CliRun r;
+  const json j = runJson("--map " + quote(tmp("wall.txt").string()) + " --start 2,0 --goal 2,6 --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(j["path"].size(), 7u);
+  EXPECT_DOUBLE_EQ(j["min_clearance_m"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(j["mean_cell_cost"].get<double>(), 0.0);  // a map file has no graded costs
+
+  // Along row 1 the route is next to the wall.
+  const json near = runJson("--map " + quote(tmp("wall.txt").string()) + " --start 1,0 --goal 1,6 --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(near["min_clearance_m"].get<double>(), 1.0);
+
+  // No obstacle anywhere: no clearance to report. A failed plan: both null.
+  writeFile(tmp("open.txt"), "0 0 0\n0 0 0\n");
+  const json open = runJson("--map " + quote(tmp("open.txt").string()) + " --start 0,0 --goal 1,2 --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(open["min_clearance_m"].is_null());
+  EXPECT_DOUBLE_EQ(open["mean_cell_cost"].get<double>(), 0.0);
+  const json failed = runJson("--map " + quote(tmp("wall.txt").string()) + " --start 0,0 --goal 2,6 --algorithm astar", &r);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(failed["min_clearance_m"].is_null());
+  EXPECT_TRUE(failed["mean_cell_cost"].is_null());
+}
+
+TEST_F(CliTest, ClearanceInMetresOnAYamlMap) {
+  // 6 x 6 map, 0.5 m cells, one occupied cell at (0, 0); A* from (5, 0) to (5, 5) along the
+  // bottom row is 5 cells = 2.5 m from it at best.
+  std::string pgm = "P5\n6 6\n255\n";
+  std::string cells(36, static_cast<char>(254));
+  cells[0] = 0;
+  pgm += cells;
+  writeFile(tmp("dot.pgm"), pgm);
+  writeFile(tmp("dot.yaml"),
+            "image: dot.pgm\nresolution: 0.5\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  CliRun r;
+  const json j = runJson("--map " + quote(tmp("dot.yaml").string()) + " --start 5,0 --goal 5,5 --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(j["min_clearance_m"].get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(j["mean_cell_cost"].get<double>(), 0.0);
+}
+
 TEST_F(CliTest, StartXyOnYamlMap) {
   // 10 x 10 free map, 0.5 m cells, origin (-1, -1): x and y run from -1 to 4 m.
   std::string pgm = "P5\n10 10\n255\n";

@@ -25,7 +25,7 @@ struct Rgb {
 };
 
 constexpr Rgb kFreeColour{255, 255, 255};
-constexpr Rgb kObstacleColour{30, 30, 34};
+constexpr Rgb kObstacleColour{0, 0, 0};
 constexpr Rgb kUnknownColour{150, 150, 150};       // unknown, planned as obstacle
 constexpr Rgb kUnknownFreeColour{205, 205, 205};   // unknown, planned as free
 constexpr Rgb kAuxiliaryColour{166, 186, 210};     // light blue-grey
@@ -223,7 +223,7 @@ void drawMarker(Canvas& canvas, double cx, double cy, double radius, Rgb fill, R
     drawCentredText(canvas, cx, cy, label, scale, label_colour);
 }
 
-enum class Swatch { kDisc, kSquare, kLine, kGradient };
+enum class Swatch { kDisc, kSquare, kLine, kGradient, kCostRamp };
 
 struct LegendItem {
   Swatch swatch;
@@ -278,8 +278,10 @@ RgbImage renderPlan(const PlanDrawing& d) {
   }
   const bool has_aux = d.auxiliary_blocked.size() == cells &&
                        std::any_of(d.auxiliary_blocked.begin(), d.auxiliary_blocked.end(), [](auto v) { return v != 0; });
-  bool has_unknown = false;
+  bool has_unknown = false, has_cost = false;
   for (std::uint8_t v : map.cells) has_unknown = has_unknown || v == kUnknownValue;
+  for (int r = 0; r < map.height && !has_cost; ++r)
+    for (int c = 0; c < map.width && !has_cost; ++c) has_cost = view.isFree(Cell{r, c}) && view.cost(Cell{r, c}) > 0;
 
   // ---- legend below the map
   const int ts = map_w >= 600 ? 2 : 1;  // text scale
@@ -296,15 +298,45 @@ RgbImage renderPlan(const PlanDrawing& d) {
   std::vector<LegendItem> items = {{Swatch::kDisc, kStartColour, "start"}, {Swatch::kDisc, kGoalColour, "goal"}};
   const bool has_path = result && !result->path.empty();
   const bool has_islands = result && result->islands.size() > 2;
+  auto centre = [k](Cell c) { return std::pair<double, double>{(c.col + 0.5) * k, (c.row + 0.5) * k}; };
+  auto on_map = [&](Cell c) { return c.row >= 0 && c.col >= 0 && c.row < map.height && c.col < map.width; };
+
+  // Cells of a few pixels (large maps): widths and markers follow the picture's size rather
+  // than the cell's, the islands go under the path, and only islands some distance apart are
+  // drawn, so that the route stays visible.
+  const bool small_cells = k < 6;
+  const double picture = std::max(map_w, map_h);
+  const double path_w = small_cells ? std::max(3.0, picture / 400.0) : std::max(3.0, 0.3 * k);
+  const double island_r = small_cells ? std::max(3.0, picture / 300.0) : std::max(3.5, 0.4 * k);
+  std::vector<std::size_t> islands_drawn;  // indices into result->islands
+  if (has_islands) {
+    std::vector<std::pair<double, double>> centres;
+    std::vector<std::size_t> index;
+    for (std::size_t z = 1; z + 1 < result->islands.size(); ++z) {
+      if (!on_map(result->islands[z])) continue;
+      centres.push_back(centre(result->islands[z]));
+      index.push_back(z);
+    }
+    for (std::size_t kept : thinMarkers(centres, small_cells ? 8.0 * island_r : 0.0)) islands_drawn.push_back(index[kept]);
+  }
+  const std::size_t island_count = has_islands ? result->islands.size() - 2 : 0;
   if (has_path) items.push_back({Swatch::kLine, kPathColour, "path"});
-  if (has_islands) items.push_back({Swatch::kDisc, kIslandColour, "island (order)"});
+  if (has_islands)
+    items.push_back({Swatch::kDisc, kIslandColour,
+                     islands_drawn.size() < island_count
+                         ? "island (order; " + std::to_string(islands_drawn.size()) + " of " +
+                               std::to_string(island_count) + " drawn)"
+                         : std::string("island (order)")});
   if (!heat.empty()) items.push_back({Swatch::kGradient, kPathColour, "pheromone (log)"});
   if (has_aux) items.push_back({Swatch::kSquare, kAuxiliaryColour, "auxiliary-map obstacle"});
+  if (has_cost) items.push_back({Swatch::kCostRamp, kFreeColour, "cost 0..254"});
   items.push_back({Swatch::kSquare, kObstacleColour, "obstacle"});
   if (has_unknown)
     items.push_back({Swatch::kSquare, d.unknown == UnknownPolicy::kFree ? kUnknownFreeColour : kUnknownColour,
                      d.unknown == UnknownPolicy::kFree ? "unknown (as free)" : "unknown"});
-  auto swatch_width = [&](const LegendItem& item) { return (item.swatch == Swatch::kGradient ? 36 : 12) * ts; };
+  auto swatch_width = [&](const LegendItem& item) {
+    return (item.swatch == Swatch::kGradient || item.swatch == Swatch::kCostRamp ? 36 : 12) * ts;
+  };
   auto item_width = [&](const LegendItem& item) {
     return swatch_width(item) + 4 * ts + textWidth(item.label, ts) + 10 * ts;
   };
@@ -338,10 +370,13 @@ RgbImage renderPlan(const PlanDrawing& d) {
       const std::size_t i = static_cast<std::size_t>(r) * static_cast<std::size_t>(map.width) + static_cast<std::size_t>(c);
       const bool unknown = map.cells[i] == kUnknownValue;
       const bool obstacle = view.isObstacle(cell);
-      Rgb colour = obstacle ? (unknown ? kUnknownColour : kObstacleColour) : (unknown ? kUnknownFreeColour : kFreeColour);
+      const std::uint8_t grey = obstacle ? 0 : costGrey(view.cost(cell));
+      Rgb colour = obstacle ? (unknown ? kUnknownColour : kObstacleColour)
+                            : (unknown ? kUnknownFreeColour : Rgb{grey, grey, grey});
       if (!obstacle) {
         if (has_aux && d.auxiliary_blocked[i]) colour = kAuxiliaryColour;
         else if (!heat.empty() && heat[i] > 0) colour = unknown ? mix(heatColour(heat[i]), colour, 0.3) : heatColour(heat[i]);
+        if (grey < 255 && !unknown && !(colour == Rgb{grey, grey, grey})) colour = mix(colour, Rgb{0, 0, 0}, 1.0 - grey / 255.0);
       }
       canvas.fillRect(c * k, r * k, (c + 1) * k, (r + 1) * k, colour);
     }
@@ -354,26 +389,21 @@ RgbImage renderPlan(const PlanDrawing& d) {
   for (int x = 0; x < map_w; ++x) canvas.darken(x, map_h - 1, 0.7), canvas.darken(x, 0, 0.9);  // frame
   for (int y = 0; y < map_h; ++y) canvas.darken(map_w - 1, y, 0.7), canvas.darken(0, y, 0.9);
 
-  auto centre = [k](Cell c) { return std::pair<double, double>{(c.col + 0.5) * k, (c.row + 0.5) * k}; };
-  auto on_map = [&](Cell c) { return c.row >= 0 && c.col >= 0 && c.row < map.height && c.col < map.width; };
-
   // ---- path, islands, start, goal
-  const double path_w = std::max(3.0, 0.3 * k);
+  auto draw_islands = [&] {
+    for (std::size_t z : islands_drawn) {
+      const auto [x, y] = centre(result->islands[z]);
+      drawMarker(canvas, x, y, island_r, kIslandColour, kIslandEdge, false, std::to_string(z), kTextColour);
+    }
+  };
+  if (small_cells) draw_islands();
   if (has_path) {
     std::vector<std::pair<double, double>> points;
     for (const Cell& c : result->path) points.push_back(centre(c));
-    canvas.strokePolyline(points, path_w + std::max(2.0, 0.16 * k), kHaloColour);
+    canvas.strokePolyline(points, path_w + std::max(2.0, small_cells ? path_w * 0.6 : 0.16 * k), kHaloColour);
     canvas.strokePolyline(points, path_w, kPathColour);
   }
-  if (has_islands) {
-    const double radius = std::max(3.5, 0.4 * k);
-    for (std::size_t z = 1; z + 1 < result->islands.size(); ++z) {
-      const Cell c = result->islands[z];
-      if (!on_map(c)) continue;
-      const auto [x, y] = centre(c);
-      drawMarker(canvas, x, y, radius, kIslandColour, kIslandEdge, false, std::to_string(z), kTextColour);
-    }
-  }
+  if (!small_cells) draw_islands();
   if (d.start && on_map(*d.start)) {
     const auto [x, y] = centre(*d.start);
     drawMarker(canvas, x, y, marker_r, kStartColour, kMarkerEdge, true, "S", kHaloColour);
@@ -411,6 +441,13 @@ RgbImage renderPlan(const PlanDrawing& d) {
         case Swatch::kGradient:
           for (int g = 0; g < sw; ++g)
             canvas.fillRect(x + g, mid - 4 * ts, x + g + 1, mid + 4 * ts, heatColour(0.15 + 0.85 * g / (sw - 1.0)));
+          break;
+        case Swatch::kCostRamp:
+          canvas.fillRect(x - 1, mid - 4 * ts - 1, x + sw + 1, mid + 4 * ts + 1, kMarkerEdge);
+          for (int g = 0; g < sw; ++g) {
+            const std::uint8_t grey = costGrey(static_cast<std::uint8_t>(std::lround(254.0 * g / (sw - 1.0))));
+            canvas.fillRect(x + g, mid - 4 * ts, x + g + 1, mid + 4 * ts, Rgb{grey, grey, grey});
+          }
           break;
       }
       drawText(canvas, x + sw + 4 * ts, mid - kGlyphHeight * ts / 2, item.label, ts, kTextColour);

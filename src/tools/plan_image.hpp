@@ -2,9 +2,11 @@
 // the path, start and goal, drawn by a small rasteriser and written as PNG with stb.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
@@ -34,6 +36,28 @@ struct PlanDrawing {
 
 // Pixels per cell edge: clamp(1000 / max(W, H), 1, 24).
 int cellPixels(int width, int height);
+
+// The grey of a free cell of cost 0..254 (CostGrid::cost): cost 0 white (255), cost 254 a
+// dark grey (80), linear between, so obstacles (black) stay apart from the darkest cost.
+constexpr std::uint8_t costGrey(std::uint8_t cost) {
+  return static_cast<std::uint8_t>(255 - (static_cast<int>(cost) * (255 - 80) + 127) / 254);
+}
+
+// Islands to draw on a route: with markers of `spacing` pixels or more apart (at their
+// centres, given in pixels in route order), a marker closer than that to the last one drawn
+// is left out, so on a large map the markers do not cover the route. Returns the indices kept.
+inline std::vector<std::size_t> thinMarkers(const std::vector<std::pair<double, double>>& centres, double spacing) {
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    if (!kept.empty()) {
+      const auto& last = centres[kept.back()];
+      const double dx = centres[i].first - last.first, dy = centres[i].second - last.second;
+      if (dx * dx + dy * dy < spacing * spacing) continue;
+    }
+    kept.push_back(i);
+  }
+  return kept;
+}
 
 // Draws the plan. Throws std::invalid_argument when `map` is null or empty.
 RgbImage renderPlan(const PlanDrawing& drawing);

@@ -14,6 +14,8 @@
 #include "common/cell_json.hpp"
 #include "common/json_number.hpp"
 #include "common/parameters_json.hpp"
+#include "eaci/grid/cost_grid.hpp"
+#include "eaci/metrics/path_metrics.hpp"
 
 namespace eaci::tools {
 namespace {
@@ -47,6 +49,16 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // The route's cost (the cost model of the parameters); the length on a map without costs.
   j["cost"] = has_length && std::isfinite(r.cost) ? json(r.cost) : json(nullptr);
   j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
+  // Clearance (route cell centre to nearest obstacle cell centre, metres; null without obstacles)
+  // and mean cell cost 0..254 of the route, on the grid it was planned on.
+  j["min_clearance_m"] = nullptr;
+  j["mean_cell_cost"] = nullptr;
+  if (has_length && map && !r.path.empty()) {
+    const UnknownPolicy unknown = context.unknown_policy == "free" ? UnknownPolicy::kFree : UnknownPolicy::kObstacle;
+    const CostGrid grid = CostGrid::fromView(map->view(unknown), context.parameters.allow_corner_cutting);
+    j["min_clearance_m"] = finiteOrNull(minClearance(grid, r.path) * map->resolution);
+    j["mean_cell_cost"] = finiteOrNull(meanCellCost(grid, r.path));
+  }
 
   json path = json::array(), path_xy = json::array();
   for (const Cell& c : r.path) {
