@@ -526,3 +526,108 @@ TEST_F(CliTest, LabMapWithEaci) {
 }
 
 }  // namespace
+
+namespace {
+
+// 5 x 5 map file (resolution 1 m): a 2 x 2 block in the bottom-right corner.
+std::string cornerBlockMap() {
+  return "0 0 0 0 0\n"
+         "0 0 0 0 0\n"
+         "0 0 0 0 0\n"
+         "0 0 0 1 1\n"
+         "0 0 0 1 1\n";
+}
+
+}  // namespace
+
+TEST_F(CliTest, ToleranceMovesAGoalInAnObstacleToTheNearestFreeCell) {
+  const fs::path map = tmp("block.txt");
+  writeFile(map, cornerBlockMap());
+  const std::string common = "--map " + quote(map.string()) + " --start 0,0 --goal 4,4 --algorithm astar";
+  // (4,4): (3,4) and (4,3) 1 m away and (3,3) 1.41 m are obstacles; (2,4) and (4,2) 2 m away are free.
+  const std::string reason = expectBadInput(common + " --tolerance 1.5");
+  EXPECT_NE(reason.find("--tolerance 1.5 m"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("row 4, col 4"), std::string::npos) << reason;
+  CliRun r;
+  const json j = runJson(common + " --tolerance 2", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["goal"], json::array({2, 4}));  // of the two, the first in row-major order
+  EXPECT_EQ(j["requested_goal"], json::array({4, 4}));
+  EXPECT_EQ(j["path"].back(), json::array({2, 4}));
+  EXPECT_NE(r.out.find("moved from (row 4, col 4)"), std::string::npos) << r.out;
+  // A free goal stays; the report has no requested_goal.
+  const json free = runJson("--map " + quote(map.string()) + " --start 0,0 --goal 2,2 --algorithm astar --tolerance 3", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(free["goal"], json::array({2, 2}));
+  EXPECT_FALSE(free.contains("requested_goal"));
+  // Off the map moves onto it.
+  const json off = runJson("--map " + quote(map.string()) + " --start 0,0 --goal -1,2 --algorithm astar --tolerance 1", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(off["goal"], json::array({0, 2}));
+  // Without --tolerance the goal in an obstacle is bad input, as before.
+  expectBadInput(common);
+}
+
+// 5 x 9 map file with a wall along the top row: the straight route runs beside the wall; with
+// --inflate 3 --cost-scaling-factor 1 the cells beside it cost 252 e^-1 = 92, two away 34,
+// three away 12, and the route swings away from the wall.
+TEST_F(CliTest, InflateKeepsRoutesOffWalls) {
+  const fs::path map = tmp("wall.txt");
+  writeFile(map, "1 1 1 1 1 1 1 1 1\n"
+                 "0 0 0 0 0 0 0 0 0\n"
+                 "0 0 0 0 0 0 0 0 0\n"
+                 "0 0 0 0 0 0 0 0 0\n"
+                 "0 0 0 0 0 0 0 0 0\n");
+  const std::string common = "--map " + quote(map.string()) + " --start 1,0 --goal 1,8 --algorithm astar";
+  CliRun r;
+  const json plain = runJson(common, &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(plain["length"].get<double>(), 8.0);
+  for (const auto& cell : plain["path"]) EXPECT_EQ(cell[0], 1);
+  const json inflated = runJson(common + " --inflate 3 --cost-scaling-factor 1", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(inflated["length"].get<double>(), 8.0);
+  int farthest = 0;
+  for (const auto& cell : inflated["path"]) farthest = std::max(farthest, cell[0].get<int>());
+  EXPECT_GE(farthest, 3);
+  EXPECT_GT(inflated["cost"].get<double>(), inflated["length"].get<double>());
+  // An inscribed radius of 1 m makes the cells beside the wall obstacles: the start is in one.
+  const std::string reason = expectBadInput(common + " --inflate 3 --inscribed-radius 1");
+  EXPECT_NE(reason.find("start"), std::string::npos) << reason;
+  // ... and --tolerance moves a goal there off it.
+  const json moved = runJson("--map " + quote(map.string()) +
+                                 " --start 4,0 --goal 1,8 --algorithm astar --inflate 3 --inscribed-radius 1 --tolerance 1",
+                             &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(moved["goal"], json::array({2, 8}));
+  EXPECT_EQ(moved["requested_goal"], json::array({1, 8}));
+}
+
+TEST_F(CliTest, BadToleranceAndInflationValuesAreNamed) {
+  const fs::path map = tmp("block.txt");
+  writeFile(map, cornerBlockMap());
+  const std::string common = "--map " + quote(map.string()) + " --start 0,0 --goal 2,2 --algorithm astar";
+  struct Case {
+    const char* args;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"--tolerance -1", "--tolerance: '-1' is not a number >= 0"},
+      {"--tolerance nan", "--tolerance: 'nan' is not a number >= 0"},
+      {"--tolerance inf", "--tolerance: 'inf' is not a number >= 0"},
+      {"--tolerance 1m", "--tolerance: '1m' is not a number >= 0"},
+      {"--inflate -0.5", "--inflate: '-0.5' is not a number >= 0"},
+      {"--inflate nan", "--inflate: 'nan' is not a number >= 0"},
+      {"--inflate 1 --cost-scaling-factor nan", "--cost-scaling-factor: 'nan' is not a number >= 0"},
+      {"--inflate 1 --cost-scaling-factor -3", "--cost-scaling-factor: '-3' is not a number >= 0"},
+      {"--inflate 1 --inscribed-radius -1", "--inscribed-radius: '-1' is not a number >= 0"},
+      {"--inflate 1 --inscribed-radius 2", "--inscribed-radius 2 m exceeds --inflate 1 m"},
+      {"--inscribed-radius 0.2", "--inscribed-radius needs --inflate"},
+      {"--cost-scaling-factor 3", "--cost-scaling-factor needs --inflate"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const std::string reason = expectBadInput(common + " " + c.args);
+    EXPECT_NE(reason.find(c.expected), std::string::npos) << reason;
+  }
+}

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "eaci/grid/distance_transform.hpp"
+
 namespace eaci_ros {
 
 MapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
@@ -60,39 +62,13 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
   if (!(radius > 0) || !(grid.info.resolution > 0)) return;
   const int w = static_cast<int>(grid.info.width), h = static_cast<int>(grid.info.height);
   if (grid.data.size() != static_cast<std::size_t>(w) * h) return;
+  std::vector<std::uint8_t> occupied(grid.data.size(), 0);
+  for (std::size_t i = 0; i < occupied.size(); ++i) occupied[i] = grid.data[i] >= occupied_threshold ? 1 : 0;
+  // Row order does not matter here: distances are the same in both.
+  const std::vector<double> squared = eaci::squaredDistancesToSources(w, h, occupied);
   const double r = radius / grid.info.resolution;
-  const int reach = static_cast<int>(std::floor(r));
-  std::vector<std::pair<int, int>> disc;
-  for (int dy = -reach; dy <= reach; ++dy)
-    for (int dx = -reach; dx <= reach; ++dx)
-      if (std::hypot(dx, dy) <= r) disc.emplace_back(dx, dy);
-  const std::vector<std::int8_t> original = grid.data;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (original[static_cast<std::size_t>(y) * w + x] < occupied_threshold) continue;
-      for (const auto& [dx, dy] : disc) {
-        const int nx = x + dx, ny = y + dy;
-        if (nx >= 0 && ny >= 0 && nx < w && ny < h) grid.data[static_cast<std::size_t>(ny) * w + nx] = 100;
-      }
-    }
-  }
-}
-
-std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells) {
-  if (view.isFree(cell)) return cell;
-  const int reach = static_cast<int>(std::floor(std::max(0.0, radius_cells)));
-  std::optional<eaci::Cell> best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int dr = -reach; dr <= reach; ++dr) {
-    for (int dc = -reach; dc <= reach; ++dc) {
-      const double distance = std::hypot(dr, dc);
-      const eaci::Cell candidate{cell.row + dr, cell.col + dc};
-      if (distance > radius_cells || distance >= best_distance || !view.isFree(candidate)) continue;
-      best = candidate;
-      best_distance = distance;
-    }
-  }
-  return best;
+  for (std::size_t i = 0; i < squared.size(); ++i)
+    if (std::sqrt(squared[i]) <= r) grid.data[i] = 100;
 }
 
 nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,

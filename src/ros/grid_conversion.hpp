@@ -35,11 +35,9 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
 eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free);
 
 // Marks every cell whose centre lies within `radius` metres of an occupied cell's centre as
-// occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles.
+// occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles
+// (the core's exact distance transform, eaci/grid/distance_transform.hpp).
 void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied_threshold);
-
-// Nearest free cell to `cell` within `radius_cells` (Euclidean, in cells), `cell` itself if free.
-std::optional<eaci::Cell> nearestFreeCell(const eaci::GridView& view, eaci::Cell cell, double radius_cells);
 
 // The route as poses in the map frame: the start pose's position first, cell centres (with
 // extra poses along long straight segments of a smoothed route), the goal pose (position and

@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "eaci/grid/nearest_free.hpp"
+
 #include <chrono>
 #include <cstdio>
 
@@ -43,7 +45,7 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
   if (view.isObstacle(*start_cell)) return failed("start " + where(start) + " is in an obstacle");
   const auto goal_cell = frame.worldToCell({goal.pose.position.x, goal.pose.position.y});
   if (!goal_cell) return failed("goal " + where(goal) + " is off the map");
-  const auto reachable_goal = nearestFreeCell(view, *goal_cell, tolerance / frame.resolution);
+  const auto reachable_goal = eaci::nearestFreeCell(view, *goal_cell, tolerance / frame.resolution);
   if (!reachable_goal) {
     char reason[160];
     std::snprintf(reason, sizeof(reason), "goal %s is in an obstacle and no free cell lies within %.3f m of it",

@@ -84,6 +84,19 @@ inline std::int64_t parseSerial(const std::string& text, const std::string& opti
   return parseWholeNumber(trim(text), option, text, "a cell serial number (an integer >= 1)");
 }
 
+// A distance or factor: one finite number >= 0 (metres for distances).
+inline double parseNonNegative(const std::string& text, const std::string& option) {
+  static const char* kExpected = "a number >= 0";
+  const std::string part = trim(text);
+  const char* begin = part.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  if (part.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v) || v < 0)
+    throw std::invalid_argument(option + ": '" + text + "' is not " + kExpected);
+  return v;
+}
+
 // "key=value" (split at the first '='); the key must not be empty.
 inline std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& option) {
   const auto eq = text.find('=');

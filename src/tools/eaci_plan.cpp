@@ -27,6 +27,8 @@
 #include "eaci/aco/parameters.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/cell_numbering.hpp"
+#include "eaci/grid/inflation.hpp"
+#include "eaci/grid/nearest_free.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/io/parameter_file.hpp"
@@ -72,6 +74,10 @@ struct Options {
   std::string json_file;
   std::string png_file;
   std::string unknown;  // free | obstacle: --set allow_unknown=true | false
+  std::string tolerance;           // m: a goal off the free space moves to the nearest free cell within it
+  std::string inflate;             // m: inflation radius (costmap_2d's inflation)
+  std::string inscribed_radius;    // m, with --inflate
+  std::string cost_scaling_factor; // 1/m, with --inflate
   bool quiet = false;
 };
 
@@ -168,6 +174,30 @@ std::vector<std::uint8_t> auxiliaryBlocked(const eaci::OccupancyMap& map, eaci::
   return blocked;
 }
 
+// --inflate, --inscribed-radius, --cost-scaling-factor; none if --inflate is not given.
+std::optional<eaci::InflationParameters> inflationOf(const Options& o) {
+  try {
+    if (o.inflate.empty()) {
+      if (!o.inscribed_radius.empty()) throw InputError("--inscribed-radius needs --inflate RADIUS");
+      if (!o.cost_scaling_factor.empty()) throw InputError("--cost-scaling-factor needs --inflate RADIUS");
+      return std::nullopt;
+    }
+    eaci::InflationParameters p;
+    p.inflation_radius = eaci::cli::parseNonNegative(o.inflate, "--inflate");
+    if (!o.inscribed_radius.empty()) p.inscribed_radius = eaci::cli::parseNonNegative(o.inscribed_radius, "--inscribed-radius");
+    if (!o.cost_scaling_factor.empty())
+      p.cost_scaling_factor = eaci::cli::parseNonNegative(o.cost_scaling_factor, "--cost-scaling-factor");
+    if (p.inscribed_radius > p.inflation_radius)
+      throw InputError("--inscribed-radius " + formatNumber(p.inscribed_radius) + " m exceeds --inflate " +
+                       formatNumber(p.inflation_radius) + " m");
+    const std::string error = eaci::inflationError(p);
+    if (!error.empty()) throw InputError("--inflate: " + error);
+    return p;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+}
+
 std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanContext& context) {
   std::ostringstream s;
   s << (r.algorithm == eaci::Algorithm::kAStar ? std::string("A*") : upper(eaci::toString(r.algorithm))) << " on " << baseName(context.map_path);
@@ -234,7 +264,9 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
   s << "map:        " << context.map_path << " (" << map.width << " x " << map.height << " cells, "
     << formatNumber(map.resolution) << " m/cell, unknown cells as " << context.unknown_policy << ")\n";
   s << "start:      " << describeCell(map, *context.start) << "\n";
-  s << "goal:       " << describeCell(map, *context.goal) << "\n";
+  s << "goal:       " << describeCell(map, *context.goal);
+  if (context.requested_goal) s << " (moved from " << describeCell(map, *context.requested_goal) << " by --tolerance)";
+  s << "\n";
   s << "length:     " << formatNumber(r.length) << " cells = " << formatNumber(r.length * map.resolution) << " m ("
     << r.path.size() << " cells on the path)\n";
   s << "turn:       " << formatNumber(r.total_turn_deg, 1) << " deg in total\n";
@@ -283,6 +315,14 @@ int run(int argc, char** argv) {
   app.add_option("--unknown", o.unknown,
                  "how unknown map cells count: free or obstacle (= --set allow_unknown=true|false; default obstacle)")
       ->check(CLI::IsMember({"free", "obstacle"}));
+  app.add_option("--tolerance", o.tolerance,
+                 "metres: a goal in an obstacle or off the free space moves to the nearest free cell within this");
+  app.add_option("--inflate", o.inflate,
+                 "inflation radius in metres: obstacles spread costmap_2d's inflation cost, routes keep off walls");
+  app.add_option("--inscribed-radius", o.inscribed_radius, "metres, with --inflate: cells this near an obstacle are "
+                 "obstacles too (default 0)");
+  app.add_option("--cost-scaling-factor", o.cost_scaling_factor,
+                 "with --inflate: how fast the inflation cost decays with the distance, 1/m (default 10)");
   app.add_option("--json", o.json_file, "write a JSON report here (also on failure)");
   app.add_option("--png", o.png_file, "write a PNG picture of the map, pheromone, islands and path here");
   app.add_flag("--quiet,-q", o.quiet, "print nothing on success");
@@ -309,6 +349,8 @@ int run(int argc, char** argv) {
   context.map_path = o.map_path;
   context.unknown_policy = "obstacle";
   eaci::Parameters params{};
+  std::vector<std::uint8_t> inflated;  // the map's costmap_2d costs with --inflate
+  eaci::GridView planning_view;        // what the planners read: the map, or `inflated`
 
   // Any failure before plan(): report it in the JSON (as far as known) and exit 2.
   auto fail = [&](const std::string& message) {
@@ -335,6 +377,29 @@ int run(int argc, char** argv) {
     context.map = &*map;
     context.start = resolveEndpoint(*map, o.start_rc, o.start_cell, o.start_xy, "start");
     context.goal = resolveEndpoint(*map, o.goal_rc, o.goal_cell, o.goal_xy, "goal");
+    planning_view = map->view(unknown);
+    if (const auto inflation = inflationOf(o)) {
+      inflated = eaci::inflatedCosts(map->view(unknown), map->resolution, *inflation);
+      planning_view = eaci::GridView(inflated.data(), map->width, map->height, eaci::RowOrder::kTopFirst,
+                                     eaci::inflatedCostsInterpretation(params.allow_unknown));
+    }
+    if (!o.tolerance.empty()) {
+      double tolerance = 0;
+      try {
+        tolerance = eaci::cli::parseNonNegative(o.tolerance, "--tolerance");
+      } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      }
+      const double cells = tolerance / map->resolution;
+      const std::optional<eaci::Cell> free = eaci::nearestFreeCell(planning_view, *context.goal, cells);
+      if (!free)
+        throw InputError("goal " + describeCell(*map, *context.goal) + " is not on free space and no free cell lies within --tolerance " +
+                         formatNumber(tolerance) + " m (" + formatNumber(cells, 2) + " cells) of it");
+      if (*free != *context.goal) {
+        context.requested_goal = context.goal;
+        context.goal = free;
+      }
+    }
   } catch (const InputError& e) {
     return fail(e.what());
   } catch (const eaci::MapLoadError& e) {
@@ -352,7 +417,7 @@ int run(int argc, char** argv) {
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   const auto t0 = std::chrono::steady_clock::now();
-  const eaci::PlanResult result = eaci::plan(map->view(unknown), *context.start, *context.goal, algorithm, params, options);
+  const eaci::PlanResult result = eaci::plan(planning_view, *context.start, *context.goal, algorithm, params, options);
   const auto t1 = std::chrono::steady_clock::now();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);

@@ -114,6 +114,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   } else {
     j["goal_xy"] = nullptr;
   }
+  if (context.requested_goal) j["requested_goal"] = *context.requested_goal;
   j["parameters"] = report::parametersToJson(context.parameters);
   return j;
 }

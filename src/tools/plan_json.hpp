@@ -21,15 +21,17 @@ struct PlanContext {
   std::string unknown_policy = "obstacle";
   std::optional<Cell> start;
   std::optional<Cell> goal;
+  std::optional<Cell> requested_goal;   // the goal asked for, when --tolerance moved it to `goal`
   Parameters parameters;                // as used (or as far as they were read)
   std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
 };
 
 // The report: success, error (only when failed), status, algorithm, length, cost, length_m,
-// min_clearance_m, mean_cell_cost, path, path_xy, iterations_to_converge, iterations_run,
-// stopped_early, interrupted, lost_ants_total, lost_ants_per_iteration,
-// best_length_per_iteration, best_length_so_far (null where infinite), total_turn_deg, islands
-// (S, islands, E), time_ms, seed, map, unknown, start, goal, parameters, in this order.
+// min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
+// iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
+// lost_ants_per_iteration, best_length_per_iteration, best_length_so_far (null where
+// infinite), total_turn_deg, islands (S, islands, E), time_ms, seed, map, unknown, start, goal,
+// (requested_goal, only when --tolerance moved the goal), parameters, in this order.
 nlohmann::ordered_json planToJson(const PlanResult& result, const PlanContext& context);
 
 // Writes planToJson() to `file`, indented. Throws std::runtime_error with a one-line reason.

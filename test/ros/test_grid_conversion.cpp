@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "eaci/grid/nearest_free.hpp"
 #include "grid_conversion.hpp"
 
 using eaci::Cell;
@@ -59,9 +60,9 @@ TEST(GridConversion, ViewReadsOccupancyWithoutCopying) {
 TEST(GridConversion, NearestFreeCellWithinTolerance) {
   const auto grid = sampleGrid();
   const auto view = eaci_ros::viewOf(grid, 65, false);
-  EXPECT_EQ(eaci_ros::nearestFreeCell(view, Cell{2, 2}, 0.0), (Cell{2, 2}));  // already free
-  EXPECT_FALSE(eaci_ros::nearestFreeCell(view, Cell{1, 1}, 0.5));            // neighbours are 1 cell away
-  const auto moved = eaci_ros::nearestFreeCell(view, Cell{1, 1}, 1.0);
+  EXPECT_EQ(eaci::nearestFreeCell(view, Cell{2, 2}, 0.0), (Cell{2, 2}));  // already free
+  EXPECT_FALSE(eaci::nearestFreeCell(view, Cell{1, 1}, 0.5));            // neighbours are 1 cell away
+  const auto moved = eaci::nearestFreeCell(view, Cell{1, 1}, 1.0);
   ASSERT_TRUE(moved);
   EXPECT_EQ(std::abs(moved->row - 1) + std::abs(moved->col - 1), 1);
   EXPECT_TRUE(view.isFree(*moved));
