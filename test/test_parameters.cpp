@@ -84,7 +84,9 @@ TEST(Parameters, SetByName) {
   EXPECT_EQ(p.seed, 42u);
   EXPECT_EQ(p.cost_factor, 0.0);
   EXPECT_TRUE(p.allow_unknown);
-  EXPECT_EQ(eaci::parameterNames().size(), 21u);
+  eaci::setParameter(p, "smooth_path", "true");
+  EXPECT_TRUE(p.smooth_path);
+  EXPECT_EQ(eaci::parameterNames().size(), 22u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

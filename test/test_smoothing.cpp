@@ -94,9 +94,15 @@ TEST(Orientation, ModeNamesAndNumbers) {
   EXPECT_THROW(eaci::orientationModeFromString("sideways"), std::invalid_argument);
 }
 
-TEST(Orientation, DensifyKeepsCornersAndCapsTheSpacing) {
-  const auto pts = eaci::densify({{0, 0}, {3, 0}, {3, 1}}, 1.5);
-  ASSERT_EQ(pts.size(), 4u);  // (0,0) (1.5,0) (3,0) (3,1)
-  EXPECT_DOUBLE_EQ(pts[1].x(), 1.5);
-  EXPECT_DOUBLE_EQ(pts[3].y(), 1.0);
+TEST(Smoothing, CellMidpointsAlongASegment) {
+  // (0,0) -> (0,3): the stretches inside (0,1), (0,2), (0,3) have their middles at 1/3, 2/3, then the end.
+  const auto ts = eaci::cellMidpointsAlong(Cell{0, 0}, Cell{0, 3});
+  ASSERT_EQ(ts.size(), 3u);
+  EXPECT_NEAR(ts[0], 1.0 / 3, 1e-12);
+  EXPECT_NEAR(ts[1], 2.0 / 3, 1e-12);
+  EXPECT_EQ(ts[2], 1.0);
+  // (0,0) -> (2,2) runs through corners: only (1,1) and (2,2) are crossed.
+  const auto diagonal = eaci::cellMidpointsAlong(Cell{0, 0}, Cell{2, 2});
+  ASSERT_EQ(diagonal.size(), 2u);
+  EXPECT_NEAR(diagonal[0], 0.5, 1e-12);
 }

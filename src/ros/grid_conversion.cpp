@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "eaci/grid/distance_transform.hpp"
+#include "eaci/path/smoothing.hpp"
 
 namespace eaci_ros {
 
@@ -77,13 +78,18 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const 
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
   if (cells.empty()) return path;
-  std::vector<Eigen::Vector2d> corners;
-  corners.reserve(cells.size());
-  for (const eaci::Cell& c : cells) corners.push_back(frame.cellToWorld(c));
-  corners.front() = {start.pose.position.x, start.pose.position.y};
-  if (cells.size() > 1) corners.back() = {goal.pose.position.x, goal.pose.position.y};
-  // A smoothed route's long segments get a pose at least every 1.5 cells (a diagonal step stays one).
-  const std::vector<Eigen::Vector2d> points = eaci::densify(corners, 1.5 * frame.resolution);
+  // Cell centres; along a smoothed route's long segments, a pose in every cell crossed.
+  std::vector<Eigen::Vector2d> points{frame.cellToWorld(cells.front())};
+  for (std::size_t k = 1; k < cells.size(); ++k) {
+    const Eigen::Vector2d a = frame.cellToWorld(cells[k - 1]), b = frame.cellToWorld(cells[k]);
+    if (eaci::directionBetween(cells[k - 1], cells[k]) >= 0) {
+      points.push_back(b);
+      continue;
+    }
+    for (double t : eaci::cellMidpointsAlong(cells[k - 1], cells[k])) points.push_back(a + t * (b - a));
+  }
+  points.front() = {start.pose.position.x, start.pose.position.y};
+  if (points.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
   const std::vector<double> headings =
       eaci::orientPoints(points, tf2::getYaw(start.pose.orientation), tf2::getYaw(goal.pose.orientation), orientation);
   for (std::size_t k = 0; k < points.size(); ++k) {

@@ -1,5 +1,4 @@
-// Poses along a route: points every `spacing` along its segments, and headings set as
-// global_planner's orientation_mode sets them (none, forward, interpolate,
+// Headings of the poses along a route, set as global_planner's orientation_mode sets them (none, forward, interpolate,
 // forward_then_interpolate), so move_base users get the behaviour they know.
 #pragma once
 
@@ -32,21 +31,6 @@ inline OrientationMode orientationModeFromString(const std::string& text) {
                     OrientationMode::kForwardThenInterpolate})
     if (text == toString(mode) || text == std::to_string(static_cast<int>(mode))) return mode;
   throw std::invalid_argument("'" + text + "' is not one of: none, forward, interpolate, forward_then_interpolate (or 0-3)");
-}
-
-// The polyline through `corners` with a point at most `spacing` after the previous one on
-// every segment; the corners themselves are kept.
-inline std::vector<Eigen::Vector2d> densify(const std::vector<Eigen::Vector2d>& corners, double spacing) {
-  std::vector<Eigen::Vector2d> points;
-  if (corners.empty()) return points;
-  points.push_back(corners.front());
-  for (std::size_t k = 1; k < corners.size(); ++k) {
-    const Eigen::Vector2d a = corners[k - 1], b = corners[k];
-    const double length = (b - a).norm();
-    const int pieces = spacing > 0 ? std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))) : 1;
-    for (int p = 1; p <= pieces; ++p) points.push_back(a + (b - a) * (static_cast<double>(p) / pieces));
-  }
-  return points;
 }
 
 namespace detail {

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <limits>
+#include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
 
@@ -62,6 +63,30 @@ inline double segmentCost(const CostGrid& grid, Cell from, Cell to) {
     return true;
   });
   return cost;
+}
+
+// Where a straight segment between two cell centres crosses each cell: the middle of its
+// stretch inside every cell after `from` that it passes through (cells it only touches at a
+// corner are skipped), as fractions t of the segment, ending with t = 1 at `to`. Poses there
+// lie in cells that follow one another side by side, or diagonally only through a corner whose
+// two side cells the segment touches.
+inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
+  std::vector<double> ts;
+  const double total = std::hypot(to.col - from.col, to.row - from.row);
+  if (total == 0) return ts;
+  double done = 0.0;
+  bool first = true;
+  traverseSegment(from, to, [&](Cell, double length) {
+    if (length > 0) {
+      if (!first) ts.push_back(std::min(1.0, (done + length / 2) / total));
+      first = false;
+      done += length;
+    }
+    return true;
+  });
+  if (ts.empty()) ts.push_back(1.0);
+  ts.back() = 1.0;  // the last cell's pose is its centre
+  return ts;
 }
 
 // Greedy string pulling: from each kept cell, the farthest later cell of the route reachable
