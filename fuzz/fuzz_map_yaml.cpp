@@ -2,7 +2,7 @@
 // The input is the YAML text, optionally followed by a NUL byte and the bytes of the image it
 // names (without one, the image is a fixed 3 x 2 PGM). No file is read: the image comes from
 // the input whatever path the YAML gives. Either a well-formed map or a one-line MapLoadError
-// that names the YAML file.
+// that names the YAML file (mode: raw gives cells of any value, trinary free / occupied / unknown).
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -39,8 +39,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(map.cells.size() == static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
   FUZZ_CHECK(std::isfinite(map.resolution) && map.resolution > 0.0);
   FUZZ_CHECK(map.origin.allFinite() && std::isfinite(map.origin_yaw));
-  for (const std::uint8_t cell : map.cells) {
-    FUZZ_CHECK(cell == eaci::kFreeValue || cell == eaci::kOccupiedValue || cell == eaci::kUnknownValue);
+  // mode: raw keeps every pixel (a costmap_2d cost, any byte); trinary gives three values only.
+  if (map.values == eaci::CellValues::kOccupancy) {
+    for (const std::uint8_t cell : map.cells) {
+      FUZZ_CHECK(cell == eaci::kFreeValue || cell == eaci::kOccupiedValue || cell == eaci::kUnknownValue);
+    }
   }
   return 0;
 }

@@ -115,6 +115,10 @@ write("map_yaml", "flow.yaml", "{image: /maps/lab.png, resolution: 1e-2, origin:
                                "negate: true}")
 write("map_yaml", "with_png.yaml", MAP_YAML.encode() + b"\x00" + PNG_GRAY)
 write("map_yaml", "with_p2.yaml", b"image: m.pgm\nresolution: 1\norigin: [0,0,0]\nmode: scale\n\x00" + PGM_P2_8)
+# mode: raw, each pixel a costmap_2d cost: a P5 of costs, and an RGBA PNG (channels averaged, alpha not counted).
+write("map_yaml", "raw_costs.yaml", MAP_YAML.encode() + b"mode: raw\n\x00P5\n4 2\n255\n" + bytes([0, 1, 128, 252, 253, 254, 255, 50]))
+write("map_yaml", "raw_rgba.yaml", b"image: c.png\nmode: raw\nresolution: 1\norigin: [0,0,0]\nnegate: 1\n\x00" +
+      png(2, 1, 6, 8, [bytes([10, 20, 31, 0, 200, 201, 202, 255])]))
 write("map_yaml", "anchors.yaml", "r: &r 0.5\nimage: \"x.pgm\"\nresolution: *r\norigin: !!seq [1, 2, 3]\n"
                                   "free_thresh: 0.7\n")
 

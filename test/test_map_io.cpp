@@ -90,19 +90,26 @@ std::string pngChunk(const std::string& type, const std::string& data) {
   return bigEndian32(static_cast<std::uint32_t>(data.size())) + type + data + bigEndian32(crc32(type + data));
 }
 
-std::string greyPng(int width, int height, const std::vector<std::uint8_t>& pixels) {
+// PNG colour types: 0 grey, 2 RGB, 3 palette, 4 grey + alpha, 6 RGBA; `channels` bytes per pixel.
+std::string png(int width, int height, int colour_type, int channels, const std::vector<std::uint8_t>& pixels,
+                int bit_depth = 8) {
   std::string scanlines;
+  const int row_bytes = width * channels;
   for (int row = 0; row < height; ++row) {
     scanlines.push_back('\0');  // filter type None
-    scanlines.append(pixels.begin() + row * width, pixels.begin() + (row + 1) * width);
+    scanlines.append(pixels.begin() + row * row_bytes, pixels.begin() + (row + 1) * row_bytes);
   }
   const auto length = static_cast<int>(scanlines.size());
   const std::string zlib = bytesOf({0x78, 0x01, 0x01, length & 0xFF, length >> 8, ~length & 0xFF, (~length >> 8) & 0xFF}) +
                            scanlines + bigEndian32(adler32(scanlines));
   const std::string header = bigEndian32(static_cast<std::uint32_t>(width)) +
-                             bigEndian32(static_cast<std::uint32_t>(height)) + bytesOf({8, 0, 0, 0, 0});
+                             bigEndian32(static_cast<std::uint32_t>(height)) + bytesOf({bit_depth, colour_type, 0, 0, 0});
   return bytesOf({0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'}) + pngChunk("IHDR", header) + pngChunk("IDAT", zlib) +
          pngChunk("IEND", "");
+}
+
+std::string greyPng(int width, int height, const std::vector<std::uint8_t>& pixels) {
+  return png(width, height, 0, 1, pixels);
 }
 
 // A fresh directory per test under the build directory, removed afterwards.
@@ -364,12 +371,97 @@ TEST_F(MapIoFiles, YamlImagePathIsRelativeToTheYamlFileUnlessAbsolute) {
 
 TEST_F(MapIoFiles, YamlModesAreAcceptedOrRefused) {
   write("map.pgm", pgmP5(3, 2, kSampleRaster));
-  for (const std::string mode : {"trinary", "scale", "raw"}) {
-    const std::string yaml = write("map.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: " + mode + "\n");
-    EXPECT_EQ(loadMapServerYaml(yaml).cells, kSampleCells) << mode;
+  for (const std::string mode : {"", "mode: trinary\n"}) {
+    const std::string yaml = write("map.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\n" + mode);
+    const OccupancyMap map = loadMapServerYaml(yaml);
+    EXPECT_EQ(map.cells, kSampleCells) << mode;
+    EXPECT_EQ(map.values, CellValues::kOccupancy) << mode;
   }
-  const std::string yaml = write("map.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: fancy\n");
-  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(yaml); }), {yaml, "'mode'", "fancy"}));
+  const std::string fancy = write("fancy.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: fancy\n");
+  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(fancy); }), {fancy, "'mode'", "'fancy'", "trinary or raw"}));
+  // map_server's scale mode would give occupancies 1..99: refused, never read as trinary.
+  const std::string scale = write("scale.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: scale\n");
+  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(scale); }), {scale, "'mode'", "'scale' is not supported"}));
+}
+
+// ------------------------------------------------------------------ raw mode
+
+// Costs across costmap_2d's range; in trinary mode these pixels would be O, O, O, O, U, F, F, F.
+const std::vector<std::uint8_t> kCostPixels = {0, 1, 100, 252, 253, 254, 255, 128};
+
+TEST_F(MapIoFiles, RawModeKeepsEveryPixelAsACostmapCost) {
+  write("costs.pgm", pgmP5(4, 2, std::string(kCostPixels.begin(), kCostPixels.end())));
+  // The thresholds are present (map_server requires them) and have no effect in raw mode.
+  const std::string yaml = write("costs.yaml", "image: costs.pgm\nmode: raw\nresolution: 0.5\norigin: [1, 2, 0]\n"
+                                               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const OccupancyMap map = loadMapServerYaml(yaml);
+  EXPECT_EQ(map.values, CellValues::kCostmapCosts);
+  EXPECT_EQ(map.cells, kCostPixels);
+
+  // Read as costmap_2d costs: 253 and 254 are obstacles, 255 is unknown, the rest are costs.
+  const GridView view = map.view();
+  EXPECT_EQ(view.cost(Cell{0, 0}), 0);
+  EXPECT_EQ(view.cost(Cell{0, 1}), 1);
+  EXPECT_EQ(view.cost(Cell{0, 2}), 100);
+  EXPECT_EQ(view.cost(Cell{0, 3}), 252);
+  EXPECT_EQ(view.cost(Cell{1, 3}), 128);
+  for (const Cell c : {Cell{0, 0}, Cell{0, 1}, Cell{0, 2}, Cell{0, 3}, Cell{1, 3}}) EXPECT_FALSE(view.isObstacle(c));
+  EXPECT_TRUE(view.isObstacle(Cell{1, 0}));  // 253
+  EXPECT_TRUE(view.isObstacle(Cell{1, 1}));  // 254
+  EXPECT_TRUE(view.isObstacle(Cell{1, 2}));  // 255, unknown as obstacle
+  const GridView unknown_free = map.view(UnknownPolicy::kFree);
+  EXPECT_FALSE(unknown_free.isObstacle(Cell{1, 2}));
+  EXPECT_EQ(unknown_free.cost(Cell{1, 2}), 0);
+  // A lethal cost of 200 makes the 252 cell an obstacle too.
+  EXPECT_TRUE(map.view(UnknownPolicy::kObstacle, 200).isObstacle(Cell{0, 3}));
+  EXPECT_FALSE(map.view(UnknownPolicy::kObstacle, 200).isObstacle(Cell{0, 2}));
+}
+
+TEST_F(MapIoFiles, RawModeImageTopRowIsTheMapTop) {
+  write("column.pgm", pgmP5(1, 2, bytesOf({10, 20})));
+  const OccupancyMap map = loadMapServerYaml(write("column.yaml", "image: column.pgm\nmode: raw\nresolution: 1\norigin: [0, 0, 0]\n"));
+  // (0.5, 0.5) m is in the bottom cell (next to the origin): the image's last row.
+  const auto bottom = map.worldToCell({0.5, 0.5});
+  ASSERT_TRUE(bottom.has_value());
+  EXPECT_EQ(map.view().value(*bottom), 20);
+  EXPECT_EQ(map.view().value(*map.worldToCell({0.5, 1.5})), 10);
+}
+
+TEST_F(MapIoFiles, RawModeNegateTakes255MinusThePixel) {
+  write("costs.pgm", pgmP5(4, 2, std::string(kCostPixels.begin(), kCostPixels.end())));
+  const OccupancyMap map = loadMapServerYaml(write("costs.yaml", "image: costs.pgm\nmode: raw\nresolution: 1\n"
+                                                                 "origin: [0, 0, 0]\nnegate: 1\n"));
+  EXPECT_EQ(map.cells, (std::vector<std::uint8_t>{255, 254, 155, 3, 2, 1, 0, 127}));
+}
+
+TEST(DecodeRawImage, PngChannelsAreAveragedWithoutAlphaAndTruncated) {
+  // map_server: mean of the colour channels, alpha not counted, then (with negate) 255 - mean,
+  // truncated: (10 + 20 + 31) / 3 = 20.33 -> 20, negated 234.67 -> 234.
+  EXPECT_EQ(decodeRawImage(png(1, 1, 2, 3, {10, 20, 31}), false).pixels, std::vector<std::uint8_t>{20});
+  EXPECT_EQ(decodeRawImage(png(1, 1, 2, 3, {10, 20, 31}), true).pixels, std::vector<std::uint8_t>{234});
+  EXPECT_EQ(decodeRawImage(png(2, 1, 6, 4, {10, 20, 30, 0, 3, 4, 4, 255}), false).pixels,
+            (std::vector<std::uint8_t>{20, 3}));  // 11 / 3 = 3.67 -> 3
+  EXPECT_EQ(decodeRawImage(png(2, 1, 4, 2, {77, 0, 252, 9}), false).pixels, (std::vector<std::uint8_t>{77, 252}));
+  EXPECT_EQ(decodeRawImage(greyPng(3, 1, {0, 128, 255}), false).pixels, (std::vector<std::uint8_t>{0, 128, 255}));
+  // ASCII PGM with maxval 255: the values as they are.
+  EXPECT_EQ(decodeRawImage("P2\n3 1\n255\n0 7 253\n", false).pixels, (std::vector<std::uint8_t>{0, 7, 253}));
+}
+
+TEST(DecodeRawImage, ImagesWhoseBytesAreNotTheValuesAreRefused) {
+  EXPECT_TRUE(messageHas(loadError([] { decodeRawImage(pgmP5(2, 1, bytesOf({0, 50}), 100), false, "c.pgm"); }),
+                         {"c.pgm", "maxval is 100", "raw mode reads 8-bit images only"}));
+  EXPECT_TRUE(messageHas(loadError([] { decodeRawImage(png(1, 1, 0, 2, {0, 9}, 16), false, "w.png"); }),
+                         {"w.png", "16 bits per channel"}));
+  EXPECT_TRUE(messageHas(loadError([] { decodeRawImage(png(1, 1, 3, 1, {0}), false, "p.png"); }),
+                         {"p.png", "palette"}));
+  EXPECT_TRUE(messageHas(loadError([] { decodeRawImage("BM" + std::string(60, '\0'), false, "b.bmp"); }),
+                         {"b.bmp", "not a PGM or PNG"}));
+}
+
+TEST_F(MapIoFiles, RawModeErrorsNameTheYamlAndTheImage) {
+  write("deep.pgm", pgmP5(2, 1, bytesOf({0, 50}), 100));
+  const std::string yaml = write("deep.yaml", "image: deep.pgm\nmode: raw\nresolution: 1\norigin: [0, 0, 0]\n");
+  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(yaml); }), {yaml, "deep.pgm", "maxval is 100"}));
 }
 
 // Writes map.pgm and a YAML with `body`, and returns the load error.

@@ -133,8 +133,10 @@ class PgmParser {
  public:
   PgmParser(const std::string& bytes, const std::string& source) : bytes_(bytes), source_(source) {}
 
-  GrayImage parse() {
+  // The image; `header`, when given, receives the header (maxval: the scale of the raster).
+  GrayImage parse(PgmHeader* header_out = nullptr) {
     const PgmHeader header = readHeader();
+    if (header_out != nullptr) *header_out = header;
     const std::size_t cells = checkedCellCount(header.width, header.height, source_);
     GrayImage image;
     image.width = static_cast<int>(header.width);
@@ -366,10 +368,18 @@ std::string stbFailureReason() {
   return std::string("cannot decode image: ") + (reason != nullptr ? reason : "unknown error");
 }
 
-// Colour images become grey with stb_image's luma weights (map_server takes the plain
-// mean of the channels; the difference only matters for coloured pixels near a threshold).
-// An alpha channel is dropped.
-GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source) {
+// An image decoded by stb_image: `channels` bytes per pixel, row 0 = top.
+struct StbPixels {
+  std::unique_ptr<stbi_uc, void (*)(void*)> data{nullptr, &stbi_image_free};
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  std::size_t cells = 0;
+};
+
+// Decodes PNG, BMP or GIF with stb_image after the checks above, converted to
+// `desired_channels` bytes per pixel (0: as many as the file has).
+StbPixels decodeWithStbImage(const std::string& bytes, const std::string& source, int desired_channels) {
   if (!hasStbImageSignature(bytes)) {
     fail(source, "unrecognised image format (supported: PGM P2/P5, PNG, BMP, GIF)");
   }
@@ -378,29 +388,48 @@ GrayImage decodeWithStbImage(const std::string& bytes, const std::string& source
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = static_cast<int>(bytes.size());
 
-  int width = 0, height = 0, channels = 0;
-  if (!stbi_info_from_memory(data, length, &width, &height, &channels)) {
+  StbPixels image;
+  if (!stbi_info_from_memory(data, length, &image.width, &image.height, &image.channels)) {
     fail(source, stbFailureReason());
   }
-  if (width <= 0 || height <= 0) fail(source, "image has no pixels");
-  const std::size_t cells = checkedCellCount(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height),
-                                             source);
-  checkDeclaredSizeIsPlausible(bytes, cells, width, height, source);
-  if (startsWith(bytes, "BM", 2)) checkBmpPixelData(bytes, width, height, source);
+  if (image.width <= 0 || image.height <= 0) fail(source, "image has no pixels");
+  image.cells = checkedCellCount(static_cast<std::uint64_t>(image.width), static_cast<std::uint64_t>(image.height),
+                                 source);
+  checkDeclaredSizeIsPlausible(bytes, image.cells, image.width, image.height, source);
+  if (startsWith(bytes, "BM", 2)) checkBmpPixelData(bytes, image.width, image.height, source);
 
   stbi_set_flip_vertically_on_load_thread(0);  // row 0 must stay the top row
-  std::unique_ptr<stbi_uc, void (*)(void*)> decoded(
-      stbi_load_from_memory(data, length, &width, &height, &channels, 1), &stbi_image_free);
-  if (!decoded) fail(source, stbFailureReason());
-  if (static_cast<std::size_t>(width) * static_cast<std::size_t>(height) != cells) {
+  int width = 0, height = 0, file_channels = 0;
+  image.data.reset(stbi_load_from_memory(data, length, &width, &height, &file_channels, desired_channels));
+  if (!image.data) fail(source, stbFailureReason());
+  if (static_cast<std::size_t>(width) * static_cast<std::size_t>(height) != image.cells) {
     fail(source, "image size changed while decoding");
   }
-
-  GrayImage image;
-  image.width = width;
-  image.height = height;
-  image.pixels.assign(decoded.get(), decoded.get() + cells);
+  image.channels = desired_channels != 0 ? desired_channels : file_channels;
   return image;
+}
+
+// Colour images become grey with stb_image's luma weights (map_server takes the plain
+// mean of the channels; the difference only matters for coloured pixels near a threshold).
+// An alpha channel is dropped.
+GrayImage decodeGreyWithStbImage(const std::string& bytes, const std::string& source) {
+  const StbPixels decoded = decodeWithStbImage(bytes, source, 1);
+  GrayImage image;
+  image.width = decoded.width;
+  image.height = decoded.height;
+  image.pixels.assign(decoded.data.get(), decoded.data.get() + decoded.cells);
+  return image;
+}
+
+// map_server's raw reading of one pixel (image_loader.cpp): the mean of its colour channels
+// (an alpha channel not counted), 255 minus that with negate, truncated to a byte.
+std::uint8_t rawPixelValue(const stbi_uc* pixel, int channels, bool negate) {
+  const int colours = channels == 2 || channels == 4 ? channels - 1 : channels;
+  int sum = 0;
+  for (int k = 0; k < colours; ++k) sum += pixel[k];
+  double mean = sum / static_cast<double>(colours);
+  if (negate) mean = 255.0 - mean;
+  return static_cast<std::uint8_t>(mean);
 }
 
 // ------------------------------------------------------------------ 0/1 text matrix
@@ -491,6 +520,7 @@ struct MapServerMetadata {
   double resolution = 0.0;
   std::array<double, 3> origin{};  // x, y, yaw
   MapServerThresholds thresholds;
+  MapServerMode mode = MapServerMode::kTrinary;
 };
 
 // Wraps yaml-cpp lookups and conversions so that every error names the file and the key.
@@ -512,7 +542,7 @@ class YamlMapReader {
                       ") must be smaller than occupied_thresh (" +
                       formatNumber(metadata.thresholds.occupied_thresh, kMessageDecimals) + ")");
     }
-    checkMode();
+    metadata.mode = readMode();
     return metadata;
   }
 
@@ -576,16 +606,18 @@ class YamlMapReader {
     failKey("negate", "must be 0, 1, true or false, got '" + text + "'");
   }
 
-  // All modes give the same map here: the planner only needs free / obstacle / unknown, so
-  // "scale" and "raw" are thresholded exactly like "trinary" (map_server would keep the
-  // intermediate occupancy values in those modes).
-  void checkMode() const {
+  // map_server's modes: trinary (also when the key is absent) and raw; scale is refused.
+  MapServerMode readMode() const {
     const YAML::Node node = optionalKey("mode");
-    if (!node.IsDefined()) return;
-    const std::string mode = readScalar(node, "mode", "trinary, scale or raw");
-    if (mode != "trinary" && mode != "scale" && mode != "raw") {
-      failKey("mode", "must be trinary, scale or raw, got '" + mode + "'");
+    if (!node.IsDefined()) return MapServerMode::kTrinary;
+    const std::string mode = readScalar(node, "mode", "trinary or raw");
+    if (mode == "trinary") return MapServerMode::kTrinary;
+    if (mode == "raw") return MapServerMode::kRaw;
+    if (mode == "scale") {
+      failKey("mode", "'scale' is not supported: map_server would publish occupancies 1..99 between the "
+                      "thresholds, which this planner does not read; use trinary, or raw with costmap_2d costs");
     }
+    failKey("mode", "must be trinary or raw (map_server also knows scale), got '" + mode + "'");
   }
 
   std::string readImagePath() const {
@@ -620,10 +652,14 @@ MapServerMetadata parseMapServerMetadata(const std::string& text, const std::str
   }
 }
 
-GrayImage loadImageFile(const std::string& image_path, const std::string& yaml_path,
+// The image of a map_server map, decoded as its mode asks: grey levels to threshold (trinary),
+// or raw pixel values (raw).
+GrayImage loadImageFile(const std::string& image_path, const std::string& yaml_path, const MapServerMetadata& metadata,
                         const ImageFileReader& read_image) {
   try {
-    return decodeImage(read_image ? read_image(image_path) : readFileBytes(image_path, kMaxMapFileBytes), image_path);
+    const std::string bytes = read_image ? read_image(image_path) : readFileBytes(image_path, kMaxMapFileBytes);
+    return metadata.mode == MapServerMode::kRaw ? decodeRawImage(bytes, metadata.thresholds.negate, image_path)
+                                                : decodeImage(bytes, image_path);
   } catch (const MapLoadError& error) {
     fail(yaml_path, std::string("image: ") + error.what());
   }
@@ -639,7 +675,36 @@ GrayImage parsePgm(const std::string& bytes, const std::string& source_name) {
 
 GrayImage decodeImage(const std::string& bytes, const std::string& source_name) {
   const bool is_pgm = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5');
-  return is_pgm ? parsePgm(bytes, source_name) : decodeWithStbImage(bytes, source_name);
+  return is_pgm ? parsePgm(bytes, source_name) : decodeGreyWithStbImage(bytes, source_name);
+}
+
+GrayImage decodeRawImage(const std::string& bytes, bool negate, const std::string& source_name) {
+  static const char* kSupported = "raw mode reads 8-bit images only: PGM with maxval 255, or PNG of 8 bits per channel "
+                                  "(grey or colour, no palette), whose pixel values are the cells' values";
+  if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5')) {
+    PgmHeader header;
+    GrayImage image = PgmParser(bytes, source_name).parse(&header);
+    if (header.maxval != 255) fail(source_name, "PGM maxval is " + std::to_string(header.maxval) + ": " + kSupported);
+    if (negate) {
+      for (std::uint8_t& value : image.pixels) value = static_cast<std::uint8_t>(255 - value);
+    }
+    return image;
+  }
+  if (!startsWith(bytes, "\x89PNG\r\n\x1a\n", 8)) fail(source_name, std::string("not a PGM or PNG image: ") + kSupported);
+  // IHDR, the first chunk: width, height, bit depth (byte 24), colour type (byte 25; 3 = palette).
+  if (bytes.size() < 26 || bytes.compare(12, 4, "IHDR") != 0) fail(source_name, "cannot decode image: no PNG IHDR chunk");
+  const std::uint32_t bit_depth = byteAt(bytes, 24), colour_type = byteAt(bytes, 25);
+  if (bit_depth != 8) fail(source_name, "PNG of " + std::to_string(bit_depth) + " bits per channel: " + kSupported);
+  if (colour_type == 3) fail(source_name, std::string("PNG with a palette: ") + kSupported);
+  const StbPixels decoded = decodeWithStbImage(bytes, source_name, 0);
+  GrayImage image;
+  image.width = decoded.width;
+  image.height = decoded.height;
+  image.pixels.resize(decoded.cells);
+  const auto channels = static_cast<std::size_t>(decoded.channels);
+  for (std::size_t i = 0; i < decoded.cells; ++i)
+    image.pixels[i] = rawPixelValue(decoded.data.get() + i * channels, decoded.channels, negate);
+  return image;
 }
 
 std::vector<std::uint8_t> thresholdImage(const GrayImage& image, const MapServerThresholds& thresholds) {
@@ -660,7 +725,7 @@ OccupancyMap loadMapServerYaml(const std::string& yaml_path) {
 OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string& yaml_path,
                                 const ImageFileReader& read_image) {
   const MapServerMetadata metadata = parseMapServerMetadata(yaml_text, yaml_path);
-  const GrayImage image = loadImageFile(metadata.image_path, yaml_path, read_image);
+  GrayImage image = loadImageFile(metadata.image_path, yaml_path, metadata, read_image);
 
   OccupancyMap map;
   map.width = image.width;
@@ -668,7 +733,12 @@ OccupancyMap parseMapServerYaml(const std::string& yaml_text, const std::string&
   map.resolution = metadata.resolution;
   map.origin = {metadata.origin[0], metadata.origin[1]};
   map.origin_yaw = metadata.origin[2];
-  map.cells = thresholdImage(image, metadata.thresholds);
+  if (metadata.mode == MapServerMode::kRaw) {
+    map.cells = std::move(image.pixels);
+    map.values = CellValues::kCostmapCosts;
+  } else {
+    map.cells = thresholdImage(image, metadata.thresholds);
+  }
   return map;
 }
 

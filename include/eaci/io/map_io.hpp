@@ -32,6 +32,10 @@ constexpr std::size_t kMaxMapFileBytes = std::size_t{4} * kMaxMapCells;  // 256 
 OccupancyMap loadMap(const std::string& path);
 
 // map_server map: image, resolution, origin, negate, occupied_thresh, free_thresh, mode.
+// mode trinary (the default): the image thresholded (thresholdImage), CellValues::kOccupancy.
+// mode raw: each pixel as it is (decodeRawImage) is a costmap_2d cost, CellValues::kCostmapCosts;
+// the thresholds are not used, negate is (as in map_server). mode scale and any other value
+// are refused with a MapLoadError naming the file and the value.
 OccupancyMap loadMapServerYaml(const std::string& yaml_path);
 
 // The same from the YAML text, as if read from the file yaml_path (errors name it, and a
@@ -59,6 +63,15 @@ GrayImage parsePgm(const std::string& bytes, const std::string& source_name = "<
 // Any map image: PGM P2/P5 by parsePgm; PNG, BMP and GIF by stb_image, converted to
 // 8-bit grey. Identified by content, not by file name; other formats are refused.
 GrayImage decodeImage(const std::string& bytes, const std::string& source_name = "<image>");
+
+// map_server's raw mode (image_loader.cpp): a pixel's value is the mean of its colour channels
+// (alpha not counted), 255 minus that with `negate`, truncated to a byte. Only images whose
+// bytes are the values are read: 8-bit PGM (maxval 255) and PNG of 8 bits per channel without
+// a palette; any other image is refused (a scaled or palette image would give other values).
+GrayImage decodeRawImage(const std::string& bytes, bool negate, const std::string& source_name = "<image>");
+
+// map_server's modes that this reader knows (map_server's third, scale, is refused).
+enum class MapServerMode { kTrinary, kRaw };
 
 // map_server's thresholding of one image (trinary mode): p = (255 - v) / 255, or v / 255 with
 // negate; p > occupied_thresh -> occupied, p < free_thresh -> free, else unknown.
