@@ -92,5 +92,24 @@ TEST(ParameterFile, ReadsFilesAndNamesTheOnesItCannotOpen) {
   }
 }
 
+// parameterYaml -> applyParameterYaml gives back every value exactly (numbers that have no
+// short decimal form included), so a planner's settings can be replayed with --params.
+TEST(ParameterFile, ParameterYamlReadsBackToTheSameValues) {
+  Parameters p;
+  p.ants = 17;
+  p.alpha = 0.1 + 0.2;  // 0.30000000000000004
+  p.neutral_cost = 1.0 / 3.0;
+  p.cost_factor = 2.5e-7;
+  p.lethal_cost = 200;
+  p.allow_unknown = true;
+  p.allow_corner_cutting = true;
+  p.island_strategy = IslandStrategy::kPaper;
+  p.seed = 18446744073709551615u;
+  Parameters q;
+  applyParameterYaml(parameterYaml(p), q, "saved");
+  EXPECT_EQ(parameterValues(q), parameterValues(p));
+  EXPECT_TRUE(has(parameterYaml(p), "lethal_cost: 200\n")) << parameterYaml(p);
+}
+
 }  // namespace
 }  // namespace eaci

@@ -4,6 +4,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
+#include <type_traits>
+#include <variant>
+
+#include "eaci/io/text.hpp"
 
 namespace eaci {
 namespace {
@@ -71,6 +75,24 @@ void applyParameterFile(const std::string& path, Parameters& params, const std::
   }
   if (in.bad()) fail(source + ": cannot read the file");
   applyParameterYaml(text, params, source);
+}
+
+std::string parameterYaml(const Parameters& params) {
+  YAML::Emitter yaml;
+  yaml << YAML::BeginMap;
+  for (const auto& [name, value] : parameterValues(params)) {
+    yaml << YAML::Key << name << YAML::Value;
+    std::visit(
+        [&yaml](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, double>) yaml << exactNumber(v);
+          else if constexpr (std::is_same_v<T, bool>) yaml << (v ? "true" : "false");
+          else yaml << v;
+        },
+        value);
+  }
+  yaml << YAML::EndMap;
+  return std::string(yaml.c_str()) + "\n";
 }
 
 }  // namespace eaci

@@ -1,5 +1,6 @@
 #include "eaci/io/text.hpp"
 
+#include <charconv>
 #include <iomanip>
 #include <sstream>
 
@@ -27,6 +28,12 @@ std::string formatNumber(double value, int max_decimals) {
     if (text.back() == '.') text.pop_back();
   }
   return text;
+}
+
+std::string exactNumber(double value) {
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
 }
 
 }  // namespace eaci

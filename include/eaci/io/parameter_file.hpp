@@ -27,4 +27,9 @@ void applyParameterYaml(const std::string& text, Parameters& params, const std::
 // read, and files over 1 MiB are refused.
 void applyParameterFile(const std::string& path, Parameters& params, const std::string& source);
 
+// Every parameter of `params` as a parameter file: one `name: value` line each, in
+// parameterNames() order, numbers written exactly, so that applyParameterYaml() reads back
+// the same values (the CLI's --params FILE replays a planner's settings).
+std::string parameterYaml(const Parameters& params);
+
 }  // namespace eaci
