@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -536,6 +537,73 @@ std::string cornerBlockMap() {
          "0 0 0 0 0\n"
          "0 0 0 1 1\n"
          "0 0 0 1 1\n";
+}
+
+// A raw map (map_server mode: raw, each pixel a costmap_2d cost), 7 x 5 cells of 1 m:
+//        c0 c1 c2  c3 c4 c5 c6
+//   r0:   0  0  0   0  0  0  0
+//   r1:   0  0  0 200  0  0  0      a band of cost 200 down column 3,
+//   r2:   0  0  0 200  0  0  0      open (cost 0) only in row 0
+//   r3:   0  0  0 200  0  0  0
+//   r4:   0  0  0 200  0  0  0      start (4, 0), goal (4, 6)
+// A move into a cell of cost c costs step x (50 + 3c) / 50 (neutral_cost 50, cost_factor 3).
+// By hand: straight along row 4 enters one band cell: 5 + 13 = 18. Over the top through
+// (0, 3): 2 x (3 sqrt2 + 1) = 10.485, with no cost paid; every other crossing enters a band
+// cell (>= 13). With cost_factor 0 only lengths count: row 4 straight, 6. With lethal_cost 200
+// the band is a wall: no diagonal may pass its corners, so the route runs (0, 2) (0, 3) (0, 4)
+// straight: 2 x (2 sqrt2 + 2) + 2 = 4 sqrt2 + 6 = 11.657.
+TEST_F(CliTest, RawMapRoutesAroundAHighCostBand) {
+  std::string pixels;
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 7; ++c) pixels.push_back(static_cast<char>(c == 3 && r > 0 ? 200 : 0));
+  writeFile(tmp("band.pgm"), "P5\n7 5\n255\n" + pixels);
+  const fs::path yaml = tmp("band.yaml");
+  writeFile(yaml, "image: band.pgm\nmode: raw\nresolution: 1\norigin: [0, 0, 0]\nnegate: 0\n"
+                  "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const std::string common = "--map " + quote(yaml.string()) + " --start 4,0 --goal 4,6";
+  CliRun r;
+
+  const json detour = runJson(common + " --algorithm astar", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(detour["cost"].get<double>(), 6 * std::sqrt(2.0) + 2, 1e-9);
+  EXPECT_NEAR(detour["length"].get<double>(), 6 * std::sqrt(2.0) + 2, 1e-9);
+  EXPECT_DOUBLE_EQ(detour["mean_cell_cost"].get<double>(), 0.0);
+  EXPECT_NE(std::find(detour["path"].begin(), detour["path"].end(), json::array({0, 3})), detour["path"].end())
+      << detour["path"].dump();
+  const CliRun summary = run(common + " --algorithm astar");
+  EXPECT_NE(summary.out.find("costmap costs, obstacles from 253"), std::string::npos) << summary.out;
+
+  const json straight = runJson(common + " --algorithm astar --set cost_factor=0", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(straight["length"].get<double>(), 6.0);
+  EXPECT_DOUBLE_EQ(straight["cost"].get<double>(), 6.0);
+  for (const auto& cell : straight["path"]) EXPECT_EQ(cell[0], 4);
+  EXPECT_NEAR(straight["mean_cell_cost"].get<double>(), 200.0 / 7.0, 1e-9);  // 7 cells, one in the band
+
+  const json walled = runJson(common + " --algorithm astar --set lethal_cost=200", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(walled["cost"].get<double>(), 4 * std::sqrt(2.0) + 6, 1e-9);
+  for (const json& cell : {json::array({0, 2}), json::array({0, 3}), json::array({0, 4})})
+    EXPECT_NE(std::find(walled["path"].begin(), walled["path"].end(), cell), walled["path"].end()) << cell.dump();
+
+  // EACI finds the detour too (its cost is at most A*'s plus a little on such a small map).
+  const json eaci = runJson(common + " --algorithm eaci --seed 3", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(eaci["cost"].get<double>(), 18.0);
+  EXPECT_GE(eaci["cost"].get<double>(), 6 * std::sqrt(2.0) + 2 - 1e-9);
+
+  // The picture of a raw map is written (the costs as a grey ramp).
+  ASSERT_EQ(run(common + " --algorithm astar --png " + quote(tmp("band.png").string())).exit_code, 0);
+  EXPECT_GT(fs::file_size(tmp("band.png")), 100u);
+}
+
+TEST_F(CliTest, UnknownMapModeIsNamed) {
+  writeFile(tmp("m.pgm"), "P5\n2 1\n255\n" + std::string(2, '\0'));
+  const fs::path yaml = tmp("m.yaml");
+  writeFile(yaml, "image: m.pgm\nmode: bogus\nresolution: 1\norigin: [0, 0, 0]\n");
+  const std::string reason = expectBadInput("--map " + quote(yaml.string()) + " --start 0,0 --goal 0,1");
+  for (const std::string& part : std::vector<std::string>{yaml.string(), "'mode'", "'bogus'"})
+    EXPECT_NE(reason.find(part), std::string::npos) << part << " missing from " << reason;
 }
 
 }  // namespace

@@ -161,10 +161,17 @@ std::string baseName(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// The map as the parameters read it: unknown cells per allow_unknown, and in a map of costs
+// (mode: raw) obstacles from lethal_cost up.
+eaci::GridView mapView(const eaci::OccupancyMap& map, const eaci::Parameters& params) {
+  return map.view(params.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle,
+                  static_cast<std::uint8_t>(params.lethal_cost));
+}
+
 // Free cells of the original map that EACI's auxiliary map (Eq. 12) blocks.
-std::vector<std::uint8_t> auxiliaryBlocked(const eaci::OccupancyMap& map, eaci::UnknownPolicy unknown,
-                                           const eaci::Parameters& params, eaci::Cell start, eaci::Cell goal) {
-  const eaci::CostGrid grid = eaci::CostGrid::fromView(map.view(unknown), params.allow_corner_cutting);
+std::vector<std::uint8_t> auxiliaryBlocked(const eaci::OccupancyMap& map, const eaci::Parameters& params,
+                                           eaci::Cell start, eaci::Cell goal) {
+  const eaci::CostGrid grid = eaci::CostGrid::fromView(mapView(map, params), params.allow_corner_cutting);
   const eaci::CostGrid aux = eaci::auxiliaryMap(grid, start, goal);
   std::vector<std::uint8_t> blocked(grid.cellCount(), 0);
   for (std::size_t i = 0; i < blocked.size(); ++i) {
@@ -238,14 +245,15 @@ Outputs writeOutputs(const Options& o, const eaci::PlanResult& r, const eaci::to
       eaci::tools::PlanDrawing drawing;
       drawing.map = context.map;
       drawing.unknown = unknown;
+      drawing.lethal_cost = static_cast<std::uint8_t>(params.lethal_cost);
       drawing.result = &r;
       drawing.start = context.start;
       drawing.goal = context.goal;
       const auto on_free = [&](const std::optional<eaci::Cell>& c) {
-        return c && context.map->view(unknown).isFree(*c);
+        return c && mapView(*context.map, params).isFree(*c);
       };
       if (r.algorithm == eaci::Algorithm::kEaci && on_free(context.start) && on_free(context.goal))
-        drawing.auxiliary_blocked = auxiliaryBlocked(*context.map, unknown, params, *context.start, *context.goal);
+        drawing.auxiliary_blocked = auxiliaryBlocked(*context.map, params, *context.start, *context.goal);
       drawing.caption = imageCaption(r, context);
       eaci::tools::writePng(o.png_file, eaci::tools::renderPlan(drawing));
     } catch (const std::exception& e) {
@@ -262,7 +270,11 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
   std::ostringstream s;
   s << "algorithm:  " << eaci::toString(r.algorithm) << "\n";
   s << "map:        " << context.map_path << " (" << map.width << " x " << map.height << " cells, "
-    << formatNumber(map.resolution) << " m/cell, unknown cells as " << context.unknown_policy << ")\n";
+    << formatNumber(map.resolution) << " m/cell, "
+    << (map.values == eaci::CellValues::kCostmapCosts
+            ? "costmap costs, obstacles from " + std::to_string(context.parameters.lethal_cost) + ", "
+            : std::string())
+    << "unknown cells as " << context.unknown_policy << ")\n";
   s << "start:      " << describeCell(map, *context.start) << "\n";
   s << "goal:       " << describeCell(map, *context.goal);
   if (context.requested_goal) s << " (moved from " << describeCell(map, *context.requested_goal) << " by --tolerance)";
@@ -377,9 +389,9 @@ int run(int argc, char** argv) {
     context.map = &*map;
     context.start = resolveEndpoint(*map, o.start_rc, o.start_cell, o.start_xy, "start");
     context.goal = resolveEndpoint(*map, o.goal_rc, o.goal_cell, o.goal_xy, "goal");
-    planning_view = map->view(unknown);
+    planning_view = mapView(*map, params);
     if (const auto inflation = inflationOf(o)) {
-      inflated = eaci::inflatedCosts(map->view(unknown), map->resolution, *inflation);
+      inflated = eaci::inflatedCosts(planning_view, map->resolution, *inflation);
       planning_view = eaci::GridView(inflated.data(), map->width, map->height, eaci::RowOrder::kTopFirst,
                                      eaci::inflatedCostsInterpretation(params.allow_unknown));
     }

@@ -26,8 +26,8 @@ struct Rgb {
 
 constexpr Rgb kFreeColour{255, 255, 255};
 constexpr Rgb kObstacleColour{0, 0, 0};
-constexpr Rgb kUnknownColour{150, 150, 150};       // unknown, planned as obstacle
-constexpr Rgb kUnknownFreeColour{205, 205, 205};   // unknown, planned as free
+constexpr Rgb kUnknownColour{150, 128, 178};       // unknown, planned as obstacle (violet: off the cost ramp)
+constexpr Rgb kUnknownFreeColour{222, 208, 238};   // unknown, planned as free
 constexpr Rgb kAuxiliaryColour{166, 186, 210};     // light blue-grey
 constexpr Rgb kPathColour{20, 80, 235};
 constexpr Rgb kHaloColour{255, 255, 255};
@@ -251,7 +251,7 @@ RgbImage renderPlan(const PlanDrawing& d) {
   const int k = cellPixels(map.width, map.height);
   const int map_w = map.width * k, map_h = map.height * k;
   const std::size_t cells = map.cells.size();
-  const GridView view = map.view(d.unknown);
+  const GridView view = map.view(d.unknown, d.lethal_cost);
 
   // ---- pheromone heat: log scale over the cells that carry more than the floor
   std::vector<double> heat;  // per cell, 0 = none, else (0, 1]

@@ -25,6 +25,7 @@ struct RgbImage {
 struct PlanDrawing {
   const OccupancyMap* map = nullptr;                 // required
   UnknownPolicy unknown = UnknownPolicy::kObstacle;  // how unknown cells were planned
+  std::uint8_t lethal_cost = kDefaultLethalCost;     // maps of costs (mode: raw): obstacles from this cost up
   const PlanResult* result = nullptr;                // path, islands, pheromone; may be null
   std::optional<Cell> start;                          // drawn when on the map
   std::optional<Cell> goal;

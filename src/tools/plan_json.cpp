@@ -55,7 +55,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
     const UnknownPolicy unknown = context.unknown_policy == "free" ? UnknownPolicy::kFree : UnknownPolicy::kObstacle;
-    const CostGrid grid = CostGrid::fromView(map->view(unknown), context.parameters.allow_corner_cutting);
+    const auto lethal = static_cast<std::uint8_t>(context.parameters.lethal_cost);  // maps of costs (mode: raw)
+    const CostGrid grid = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);
     j["min_clearance_m"] = finiteOrNull(minClearance(grid, r.path) * map->resolution);
     j["mean_cell_cost"] = finiteOrNull(meanCellCost(grid, r.path));
   }
