@@ -7,12 +7,35 @@
 
 #include <mutex>
 
+#include "eaci/io/text.hpp"
 #include "grid_conversion.hpp"
 #include "grid_planner.hpp"
 
 PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
 
 namespace eaci_ros {
+namespace {
+
+// A copy of the costmap's char map; the caller holds the costmap's mutex.
+CostmapSnapshot snapshotOf(costmap_2d::Costmap2D& costmap, const MapFrame& frame) {
+  CostmapSnapshot snapshot;
+  snapshot.frame = frame;
+  const unsigned char* cells = costmap.getCharMap();
+  snapshot.cells.assign(cells, cells + static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
+  return snapshot;
+}
+
+MapFrame costmapFrame(costmap_2d::Costmap2D& costmap, const std::string& frame_id) {
+  MapFrame frame;
+  frame.frame_id = frame_id;
+  frame.origin = {costmap.getOriginX(), costmap.getOriginY()};
+  frame.resolution = costmap.getResolution();
+  frame.width = static_cast<int>(costmap.getSizeInCellsX());
+  frame.height = static_cast<int>(costmap.getSizeInCellsY());
+  return frame;
+}
+
+}  // namespace
 
 EaciGlobalPlanner::EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros) {
   initialize(std::move(name), costmap_ros);
@@ -41,6 +64,9 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   cancel_service_ = cancel_nh.advertiseService("cancel", &EaciGlobalPlanner::onCancel, this);
   cancel_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &cancel_queue_);
   cancel_spinner_->start();
+  private_nh.param("save_costmap_dir", save_costmap_dir_, std::string("/tmp"));
+  private_nh.param("save_costmap_on_failure", save_costmap_on_failure_, false);
+  save_costmap_service_ = private_nh.advertiseService("save_costmap", &EaciGlobalPlanner::onSaveCostmap, this);
   initialized_ = true;
   ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s",
            name.c_str(), eaci::toString(options_.algorithm), params_.ants, params_.max_iterations, params_.islands,
@@ -74,13 +100,10 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
   GridPlan result;
   MapFrame map_frame;
+  std::optional<CostmapSnapshot> failed_on;  // with save_costmap_on_failure
   {
     std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
-    map_frame.frame_id = frame;
-    map_frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
-    map_frame.resolution = costmap->getResolution();
-    map_frame.width = static_cast<int>(costmap->getSizeInCellsX());
-    map_frame.height = static_cast<int>(costmap->getSizeInCellsY());
+    map_frame = costmapFrame(*costmap, frame);
     // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
     eaci::CellInterpretation costs =
         eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params_.lethal_cost), params_.allow_unknown);
@@ -88,9 +111,21 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
     result = planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
+    if (!result.ok && save_costmap_on_failure_) failed_on = snapshotOf(*costmap, map_frame);
+  }
+  PlanRecord record;
+  record.start = {start.pose.position.x, start.pose.position.y};
+  record.goal = {goal.pose.position.x, goal.pose.position.y};
+  record.tolerance = tolerance;
+  record.outcome = describeOutcome(result.ok, result.error, result.result, map_frame.resolution);
+  {
+    std::lock_guard<std::mutex> lock(last_plan_mutex_);
+    last_plan_ = record;
   }
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
+    ReplayFiles files;
+    if (failed_on) saveForReplay("eaci_failed_plan", *failed_on, record, "the costmap of a failed plan", files);
     return false;
   }
   if (result.stopped_by != StopReason::kNone)
@@ -122,6 +157,56 @@ bool EaciGlobalPlanner::onCancel(std_srvs::Trigger::Request&, std_srvs::Trigger:
                          : "no plan in progress";
   ROS_INFO("EaciGlobalPlanner %s: cancel: %s", name_.c_str(), response.message.c_str());
   return true;
+}
+
+bool EaciGlobalPlanner::onSaveCostmap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  if (!initialized_) {
+    response.success = false;
+    response.message = "not initialised";
+    return true;
+  }
+  CostmapSnapshot snapshot;
+  {
+    costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
+    std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
+    snapshot = snapshotOf(*costmap, costmapFrame(*costmap, costmap_ros_->getGlobalFrameID()));
+  }
+  std::optional<PlanRecord> last;
+  {
+    std::lock_guard<std::mutex> lock(last_plan_mutex_);
+    last = last_plan_;
+  }
+  ReplayFiles files;
+  const std::string error = saveForReplay(
+      "eaci_costmap", snapshot, last,
+      last ? "the costmap when ~save_costmap was called; the request below is the last one planned"
+           : "the costmap when ~save_costmap was called; no plan had been asked for",
+      files);
+  response.success = error.empty();
+  response.message = error.empty() ? files.map_yaml + (files.command.empty() ? "" : "; replay: " + files.command) : error;
+  return true;
+}
+
+std::string EaciGlobalPlanner::saveForReplay(const std::string& prefix, const CostmapSnapshot& costmap,
+                                             const std::optional<PlanRecord>& request, const std::string& note,
+                                             ReplayFiles& files) {
+  const std::vector<std::string> notes = {
+      "saved by the move_base plugin EaciGlobalPlanner " + name_ + ": " + note,
+      "costmap_2d costs: 0 free, 1..252 cost, 253/254 obstacles, 255 unknown (lethal_cost " +
+          std::to_string(params_.lethal_cost) + ", allow_unknown " + (params_.allow_unknown ? "true" : "false") + ")",
+      "the plugin's max_planning_time was " + eaci::formatNumber(options_.max_planning_time) +
+          " s; the replay runs every iteration"};
+  try {
+    files = saveCostmapForReplay(save_costmap_dir_, timestampedName(prefix), costmap, params_, options_.algorithm,
+                                 request, notes);
+  } catch (const std::exception& e) {
+    ROS_ERROR("EaciGlobalPlanner %s: cannot save the costmap: %s", name_.c_str(), e.what());
+    return e.what();
+  }
+  ROS_INFO("EaciGlobalPlanner %s: saved the costmap as %s (+ %s, parameters %s)", name_.c_str(),
+           files.map_yaml.c_str(), files.map_image.c_str(), files.params_yaml.c_str());
+  if (!files.command.empty()) ROS_INFO("EaciGlobalPlanner %s: replay with: %s", name_.c_str(), files.command.c_str());
+  return "";
 }
 
 }  // namespace eaci_ros

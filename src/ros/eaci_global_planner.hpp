@@ -13,9 +13,11 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "costmap_replay.hpp"
 #include "eaci/aco/parameters.hpp"
 #include "plan_cancellation.hpp"
 #include "ros_parameters.hpp"
@@ -31,7 +33,8 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   // ~<name>/pheromone and the ~<name>/make_plan and ~<name>/cancel services. ~cancel
   // (std_srvs/Trigger) stops the plan in progress at its next iteration with the best route so
   // far; it has a callback queue and a thread of its own, so it is answered while the host's
-  // spinner threads plan.
+  // spinner threads plan. ~<name>/save_costmap (std_srvs/Trigger) saves the costmap for replay
+  // with eaci_plan (see onSaveCostmap), as a failed plan does with ~save_costmap_on_failure.
   void initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) override;
 
   // false with a ROS_ERROR / ROS_WARN naming the reason: not initialised, a pose in another
@@ -46,6 +49,12 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
                          double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  // ~<name>/save_costmap (std_srvs/Trigger): the current costmap (copied under its mutex) as a
+  // raw map in ~save_costmap_dir, with the last request and the eaci_plan command replaying it.
+  bool onSaveCostmap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  // Writes the files (costmap_replay.hpp) and logs their paths; "" or the reason it failed.
+  std::string saveForReplay(const std::string& prefix, const CostmapSnapshot& costmap,
+                            const std::optional<PlanRecord>& request, const std::string& note, ReplayFiles& files);
 
   bool initialized_ = false;
   std::string name_;
@@ -60,6 +69,13 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   ros::CallbackQueue cancel_queue_;
   std::unique_ptr<ros::AsyncSpinner> cancel_spinner_;
   ros::ServiceServer cancel_service_;
+  // Saving costmaps for offline replay: ~save_costmap_dir (default /tmp), and
+  // ~save_costmap_on_failure (default false) to save the costmap of every failed plan.
+  std::string save_costmap_dir_ = "/tmp";
+  bool save_costmap_on_failure_ = false;
+  ros::ServiceServer save_costmap_service_;
+  std::mutex last_plan_mutex_;
+  std::optional<PlanRecord> last_plan_;  // the last request that reached the costmap, and its outcome
 };
 
 }  // namespace eaci_ros

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 
 #include "eaci/grid/distance_transform.hpp"
@@ -27,6 +28,9 @@ MapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
 }
 
 nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std::string& frame_id) {
+  if (map.values != eaci::CellValues::kOccupancy)
+    throw std::invalid_argument("a map of costmap costs (mode: raw) has no occupancy values to publish; plan on it "
+                                "with eaci_plan, or give a trinary map");
   nav_msgs::OccupancyGrid grid;
   grid.header.frame_id = frame_id;
   grid.info.resolution = static_cast<float>(map.resolution);

@@ -28,6 +28,7 @@ struct MapFrame : eaci::MapFrame {
 MapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
 
 // A map loaded by the core (row 0 = top) as the message map_server would publish (bottom row first).
+// Throws std::invalid_argument for a map of costmap costs (mode: raw): its bytes are no occupancies.
 nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std::string& frame_id);
 
 // The grid's data viewed without a copy: int8 -1 (unknown) reads as the byte 255; cells at
