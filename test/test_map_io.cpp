@@ -381,7 +381,7 @@ TEST_F(MapIoFiles, YamlModesAreAcceptedOrRefused) {
   EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(fancy); }), {fancy, "'mode'", "'fancy'", "trinary or raw"}));
   // map_server's scale mode would give occupancies 1..99: refused, never read as trinary.
   const std::string scale = write("scale.yaml", "image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: scale\n");
-  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(scale); }), {scale, "'mode'", "'scale' is not supported"}));
+  EXPECT_TRUE(messageHas(loadError([&] { loadMapServerYaml(scale); }), {scale, "'mode' is 'scale', which is not supported"}));
 }
 
 // ------------------------------------------------------------------ raw mode

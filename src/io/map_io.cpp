@@ -614,8 +614,8 @@ class YamlMapReader {
     if (mode == "trinary") return MapServerMode::kTrinary;
     if (mode == "raw") return MapServerMode::kRaw;
     if (mode == "scale") {
-      failKey("mode", "'scale' is not supported: map_server would publish occupancies 1..99 between the "
-                      "thresholds, which this planner does not read; use trinary, or raw with costmap_2d costs");
+      failKey("mode", "is 'scale', which is not supported: map_server would publish occupancies 1..99 between "
+                      "the thresholds, which this planner does not read; use trinary, or raw with costmap_2d costs");
     }
     failKey("mode", "must be trinary or raw (map_server also knows scale), got '" + mode + "'");
   }
