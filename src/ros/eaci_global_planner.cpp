@@ -26,13 +26,7 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   name_ = name;
   costmap_ros_ = costmap_ros;
   ros::NodeHandle private_nh("~/" + name);
-  try {
-    readParameters(private_nh, params_, options_);
-  } catch (const std::exception& e) {
-    ROS_ERROR("EaciGlobalPlanner %s: %s; using the defaults", name.c_str(), e.what());
-    params_ = eaci::Parameters{};
-    options_ = RosPlannerOptions{};
-  }
+  config_ = std::make_unique<PlannerConfiguration>(private_nh, plan_mutex_, "EaciGlobalPlanner " + name);
   plan_pub_ = private_nh.advertise<nav_msgs::Path>("plan", 1);
   pheromone_pub_ = private_nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
   make_plan_service_ = private_nh.advertiseService("make_plan", &EaciGlobalPlanner::onMakePlan, this);
@@ -42,14 +36,17 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   cancel_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &cancel_queue_);
   cancel_spinner_->start();
   initialized_ = true;
-  ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s",
-           name.c_str(), eaci::toString(options_.algorithm), params_.ants, params_.max_iterations, params_.islands,
-           eaci::toString(params_.island_strategy), options_.max_planning_time);
+  std::lock_guard<std::mutex> lock(plan_mutex_);
+  const eaci::Parameters& params = config_->params();
+  ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s%s",
+           name.c_str(), eaci::toString(config_->options().algorithm), params.ants, params.max_iterations,
+           params.islands, eaci::toString(params.island_strategy), config_->options().max_planning_time,
+           config_->error().empty() ? "" : " (but a parameter is bad: no plans until it is fixed)");
 }
 
 bool EaciGlobalPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                  std::vector<geometry_msgs::PoseStamped>& plan) {
-  return planWithTolerance(start, goal, options_.default_tolerance, plan);
+  return planWithTolerance(start, goal, -1.0, plan);
 }
 
 bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& start,
@@ -70,6 +67,13 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   }
 
   std::lock_guard<std::mutex> one_at_a_time(plan_mutex_);
+  if (!config_->error().empty()) {
+    ROS_ERROR("EaciGlobalPlanner %s: %s: refusing to plan until it is fixed", name_.c_str(), config_->error().c_str());
+    return false;
+  }
+  const eaci::Parameters& params = config_->params();
+  const RosPlannerOptions& options = config_->options();
+  if (tolerance < 0) tolerance = options.default_tolerance;
   const PlanCancellation::Scope in_progress(cancellation_);
   costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
   GridPlan result;
@@ -83,11 +87,11 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     map_frame.height = static_cast<int>(costmap->getSizeInCellsY());
     // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
     eaci::CellInterpretation costs =
-        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params_.lethal_cost), params_.allow_unknown);
+        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
     costs.unknown_value = costmap_2d::NO_INFORMATION;
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
-    result = planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
+    result = planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag());
   }
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
@@ -97,8 +101,8 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning the best route so far", name_.c_str(),
              toString(result.stopped_by), result.result.iterations_run);
   plan = result.path.poses;
-  if (options_.publish_plan) plan_pub_.publish(result.path);
-  if (options_.visualize_pheromone && !result.result.pheromone.empty())
+  if (options.publish_plan) plan_pub_.publish(result.path);
+  if (options.visualize_pheromone && !result.result.pheromone.empty())
     pheromone_pub_.publish(fieldToGrid(result.result.pheromone, map_frame, ros::Time::now()));
   return true;
 }
@@ -108,8 +112,8 @@ bool EaciGlobalPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs
   geometry_msgs::PoseStamped start = request.start, goal = request.goal;
   if (start.header.frame_id.empty()) start.header.frame_id = frame;
   if (goal.header.frame_id.empty()) goal.header.frame_id = frame;
-  const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
-  planWithTolerance(start, goal, tolerance, response.plan.poses);
+  // The request's own tolerance when > 0, else default_tolerance.
+  planWithTolerance(start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
   response.plan.header.frame_id = frame;
   response.plan.header.stamp = ros::Time::now();
   return true;
