@@ -12,7 +12,8 @@ if [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs
              libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev
              rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools
-             python3-rospy python3-std-msgs python3-nav-msgs)
+             python3-rospy python3-std-msgs python3-nav-msgs
+             libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure)
 fi
 packages+=("$@")
 

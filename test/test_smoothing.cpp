@@ -86,11 +86,34 @@ TEST(Orientation, ModesSetHeadingsAsGlobalPlannerDoes) {
   EXPECT_DOUBLE_EQ(ftoi[2], kNorth);
   EXPECT_NEAR(ftoi[3], kNorth + (2.0 - kNorth) / 2.0, 1e-12);
   EXPECT_DOUBLE_EQ(ftoi[4], 2.0);
+  // backward / leftward / rightward: forward turned so that the -x / +y / -y axis points along
+  // the route (global_planner: yaw + pi, yaw - pi/2, yaw + pi/2); the goal keeps its own heading.
+  const auto backward = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kBackward);
+  const auto leftward = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kLeftward);
+  const auto rightward = eaci::orientPoints(pts, 0.3, 2.0, OrientationMode::kRightward);
+  const std::vector<double> west_south{M_PI, M_PI, -M_PI / 2, -M_PI / 2};       // facing back along E, E, N, N
+  const std::vector<double> south_east{-M_PI / 2, -M_PI / 2, 0.0, 0.0};         // +y along E, E, N, N
+  const std::vector<double> north_west{M_PI / 2, M_PI / 2, M_PI, M_PI};         // -y along E, E, N, N
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(std::cos(backward[k]), std::cos(west_south[k]), 1e-12) << k;
+    EXPECT_NEAR(std::sin(backward[k]), std::sin(west_south[k]), 1e-12) << k;
+    EXPECT_NEAR(std::cos(leftward[k]), std::cos(south_east[k]), 1e-12) << k;
+    EXPECT_NEAR(std::sin(leftward[k]), std::sin(south_east[k]), 1e-12) << k;
+    EXPECT_NEAR(std::cos(rightward[k]), std::cos(north_west[k]), 1e-12) << k;
+    EXPECT_NEAR(std::sin(rightward[k]), std::sin(north_west[k]), 1e-12) << k;
+  }
+  EXPECT_DOUBLE_EQ(backward[4], 2.0);
+  EXPECT_DOUBLE_EQ(leftward[4], 2.0);
+  EXPECT_DOUBLE_EQ(rightward[4], 2.0);
 }
 
 TEST(Orientation, ModeNamesAndNumbers) {
   EXPECT_EQ(eaci::orientationModeFromString("forward_then_interpolate"), eaci::OrientationMode::kForwardThenInterpolate);
   EXPECT_EQ(eaci::orientationModeFromString("2"), eaci::OrientationMode::kInterpolate);
+  EXPECT_EQ(eaci::orientationModeFromString("4"), eaci::OrientationMode::kBackward);
+  EXPECT_EQ(eaci::orientationModeFromString("leftward"), eaci::OrientationMode::kLeftward);
+  EXPECT_EQ(eaci::orientationModeFromString("6"), eaci::OrientationMode::kRightward);
+  EXPECT_THROW(eaci::orientationModeFromString("7"), std::invalid_argument);
   EXPECT_THROW(eaci::orientationModeFromString("sideways"), std::invalid_argument);
 }
 

@@ -49,13 +49,7 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   name_ = name;
   costmap_ros_ = costmap_ros;
   ros::NodeHandle private_nh("~/" + name);
-  try {
-    readParameters(private_nh, params_, options_);
-  } catch (const std::exception& e) {
-    ROS_ERROR("EaciGlobalPlanner %s: %s; using the defaults", name.c_str(), e.what());
-    params_ = eaci::Parameters{};
-    options_ = RosPlannerOptions{};
-  }
+  config_ = std::make_unique<PlannerConfiguration>(private_nh, plan_mutex_, "EaciGlobalPlanner " + name);
   plan_pub_ = private_nh.advertise<nav_msgs::Path>("plan", 1);
   pheromone_pub_ = private_nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
   make_plan_service_ = private_nh.advertiseService("make_plan", &EaciGlobalPlanner::onMakePlan, this);
@@ -68,14 +62,17 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   private_nh.param("save_costmap_on_failure", save_costmap_on_failure_, false);
   save_costmap_service_ = private_nh.advertiseService("save_costmap", &EaciGlobalPlanner::onSaveCostmap, this);
   initialized_ = true;
-  ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s",
-           name.c_str(), eaci::toString(options_.algorithm), params_.ants, params_.max_iterations, params_.islands,
-           eaci::toString(params_.island_strategy), options_.max_planning_time);
+  std::lock_guard<std::mutex> lock(plan_mutex_);
+  const eaci::Parameters& params = config_->params();
+  ROS_INFO("EaciGlobalPlanner %s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s%s",
+           name.c_str(), eaci::toString(config_->options().algorithm), params.ants, params.max_iterations,
+           params.islands, eaci::toString(params.island_strategy), config_->options().max_planning_time,
+           config_->error().empty() ? "" : " (but a parameter is bad: no plans until it is fixed)");
 }
 
 bool EaciGlobalPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                  std::vector<geometry_msgs::PoseStamped>& plan) {
-  return planWithTolerance(start, goal, options_.default_tolerance, plan);
+  return planWithTolerance(start, goal, -1.0, plan);
 }
 
 bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& start,
@@ -96,6 +93,13 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   }
 
   std::lock_guard<std::mutex> one_at_a_time(plan_mutex_);
+  if (!config_->error().empty()) {
+    ROS_ERROR("EaciGlobalPlanner %s: %s: refusing to plan until it is fixed", name_.c_str(), config_->error().c_str());
+    return false;
+  }
+  const eaci::Parameters& params = config_->params();
+  const RosPlannerOptions& options = config_->options();
+  if (tolerance < 0) tolerance = options.default_tolerance;
   const PlanCancellation::Scope in_progress(cancellation_);
   costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
   GridPlan result;
@@ -106,11 +110,11 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     map_frame = costmapFrame(*costmap, frame);
     // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
     eaci::CellInterpretation costs =
-        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params_.lethal_cost), params_.allow_unknown);
+        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
     costs.unknown_value = costmap_2d::NO_INFORMATION;
     const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                               costs);
-    result = planOnGrid(view, map_frame, start, goal, tolerance, params_, options_, cancellation_.flag());
+    result = planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag());
     if (!result.ok && save_costmap_on_failure_) failed_on = snapshotOf(*costmap, map_frame);
   }
   PlanRecord record;
@@ -125,15 +129,15 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
     ReplayFiles files;
-    if (failed_on) saveForReplay("eaci_failed_plan", *failed_on, record, "the costmap of a failed plan", files);
+    if (failed_on) saveForReplay("eaci_failed_plan", *failed_on, record, "the costmap of a failed plan", params, options, files);
     return false;
   }
   if (result.stopped_by != StopReason::kNone)
     ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning the best route so far", name_.c_str(),
              toString(result.stopped_by), result.result.iterations_run);
   plan = result.path.poses;
-  if (options_.publish_plan) plan_pub_.publish(result.path);
-  if (options_.visualize_pheromone && !result.result.pheromone.empty())
+  if (options.publish_plan) plan_pub_.publish(result.path);
+  if (options.visualize_pheromone && !result.result.pheromone.empty())
     pheromone_pub_.publish(fieldToGrid(result.result.pheromone, map_frame, ros::Time::now()));
   return true;
 }
@@ -143,8 +147,8 @@ bool EaciGlobalPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs
   geometry_msgs::PoseStamped start = request.start, goal = request.goal;
   if (start.header.frame_id.empty()) start.header.frame_id = frame;
   if (goal.header.frame_id.empty()) goal.header.frame_id = frame;
-  const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
-  planWithTolerance(start, goal, tolerance, response.plan.poses);
+  // The request's own tolerance when > 0, else default_tolerance.
+  planWithTolerance(start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
   response.plan.header.frame_id = frame;
   response.plan.header.stamp = ros::Time::now();
   return true;
@@ -176,12 +180,19 @@ bool EaciGlobalPlanner::onSaveCostmap(std_srvs::Trigger::Request&, std_srvs::Tri
     std::lock_guard<std::mutex> lock(last_plan_mutex_);
     last = last_plan_;
   }
+  eaci::Parameters params;
+  RosPlannerOptions options;
+  {
+    std::lock_guard<std::mutex> lock(plan_mutex_);  // waits for a plan in progress
+    params = config_->params();
+    options = config_->options();
+  }
   ReplayFiles files;
   const std::string error = saveForReplay(
       "eaci_costmap", snapshot, last,
       last ? "the costmap when ~save_costmap was called; the request below is the last one planned"
            : "the costmap when ~save_costmap was called; no plan had been asked for",
-      files);
+      params, options, files);
   response.success = error.empty();
   response.message = error.empty() ? files.map_yaml + (files.command.empty() ? "" : "; replay: " + files.command) : error;
   return true;
@@ -189,15 +200,16 @@ bool EaciGlobalPlanner::onSaveCostmap(std_srvs::Trigger::Request&, std_srvs::Tri
 
 std::string EaciGlobalPlanner::saveForReplay(const std::string& prefix, const CostmapSnapshot& costmap,
                                              const std::optional<PlanRecord>& request, const std::string& note,
+                                             const eaci::Parameters& params, const RosPlannerOptions& options,
                                              ReplayFiles& files) {
   const std::vector<std::string> notes = {
       "saved by the move_base plugin EaciGlobalPlanner " + name_ + ": " + note,
       "costmap_2d costs: 0 free, 1..252 cost, 253/254 obstacles, 255 unknown (lethal_cost " +
-          std::to_string(params_.lethal_cost) + ", allow_unknown " + (params_.allow_unknown ? "true" : "false") + ")",
-      "the plugin's max_planning_time was " + eaci::formatNumber(options_.max_planning_time) +
+          std::to_string(params.lethal_cost) + ", allow_unknown " + (params.allow_unknown ? "true" : "false") + ")",
+      "the plugin's max_planning_time was " + eaci::formatNumber(options.max_planning_time) +
           " s; the replay runs every iteration"};
   try {
-    files = saveCostmapForReplay(save_costmap_dir_, timestampedName(prefix), costmap, params_, options_.algorithm,
+    files = saveCostmapForReplay(save_costmap_dir_, timestampedName(prefix), costmap, params, options.algorithm,
                                  request, notes);
   } catch (const std::exception& e) {
     ROS_ERROR("EaciGlobalPlanner %s: cannot save the costmap: %s", name_.c_str(), e.what());

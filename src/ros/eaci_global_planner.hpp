@@ -20,7 +20,7 @@
 #include "costmap_replay.hpp"
 #include "eaci/aco/parameters.hpp"
 #include "plan_cancellation.hpp"
-#include "ros_parameters.hpp"
+#include "planner_configuration.hpp"
 
 namespace eaci_ros {
 
@@ -29,7 +29,8 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   EaciGlobalPlanner() = default;
   EaciGlobalPlanner(std::string name, costmap_2d::Costmap2DROS* costmap_ros);
 
-  // Reads the parameters under ~<name>/ (see ros_parameters.hpp), advertises ~<name>/plan,
+  // Reads the parameters under ~<name>/ (see ros_parameters.hpp) and serves them there with
+  // dynamic_reconfigure (planner_configuration.hpp), advertises ~<name>/plan,
   // ~<name>/pheromone and the ~<name>/make_plan and ~<name>/cancel services. ~cancel
   // (std_srvs/Trigger) stops the plan in progress at its next iteration with the best route so
   // far; it has a callback queue and a thread of its own, so it is answered while the host's
@@ -37,14 +38,15 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   // with eaci_plan (see onSaveCostmap), as a failed plan does with ~save_costmap_on_failure.
   void initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) override;
 
-  // false with a ROS_ERROR / ROS_WARN naming the reason: not initialised, a pose in another
-  // frame, start or goal off the costmap, in an obstacle (the goal beyond default_tolerance),
+  // false with a ROS_ERROR / ROS_WARN naming the reason: not initialised, a bad parameter (the
+  // sentence naming it, on every call until it is fixed), a pose in another frame, start or goal off the costmap, in an obstacle (the goal beyond default_tolerance),
   // or no route (within max_planning_time, before ~cancel or before ROS shut down). Plans run one
   // at a time (move_base's planner thread and the ~make_plan service may ask together).
   bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                 std::vector<geometry_msgs::PoseStamped>& plan) override;
 
  private:
+  // tolerance < 0: the default_tolerance parameter.
   bool planWithTolerance(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                          double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
@@ -54,13 +56,13 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   bool onSaveCostmap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   // Writes the files (costmap_replay.hpp) and logs their paths; "" or the reason it failed.
   std::string saveForReplay(const std::string& prefix, const CostmapSnapshot& costmap,
-                            const std::optional<PlanRecord>& request, const std::string& note, ReplayFiles& files);
+                            const std::optional<PlanRecord>& request, const std::string& note,
+                            const eaci::Parameters& params, const RosPlannerOptions& options, ReplayFiles& files);
 
   bool initialized_ = false;
   std::string name_;
   costmap_2d::Costmap2DROS* costmap_ros_ = nullptr;
-  eaci::Parameters params_;
-  RosPlannerOptions options_;
+  std::unique_ptr<PlannerConfiguration> config_;  // read and changed under plan_mutex_
   ros::Publisher plan_pub_;
   ros::Publisher pheromone_pub_;
   ros::ServiceServer make_plan_service_;

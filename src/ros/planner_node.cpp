@@ -4,7 +4,9 @@
 //   ~frame_id (string)   frame of a map loaded from ~map_file (default "map"); it is
 //                        published latched on `map` for RViz and other nodes
 //   every core parameter and the ROS options of ros_parameters.hpp under ~ (~robot_radius
-//   grows the obstacles so that a robot of that radius, planned as a point, keeps clear)
+//   grows the obstacles so that a robot of that radius, planned as a point, keeps clear);
+//   dynamic_reconfigure (cfg/EaciPlanner.cfg) changes them at run time, between two plans. A bad
+//   value is named on every request, which fails, until it is fixed (planner_configuration.hpp).
 // Services: ~make_plan (nav_msgs/GetPlan), ~cancel (std_srvs/Trigger: the plan in progress
 // stops at its next iteration and answers with the best route so far). Topics: ~plan
 // (nav_msgs/Path), ~pheromone (nav_msgs/OccupancyGrid, with ~visualize_pheromone).
@@ -29,13 +31,13 @@
 #include "eaci/io/map_io.hpp"
 #include "grid_planner.hpp"
 #include "plan_cancellation.hpp"
+#include "planner_configuration.hpp"
 
 namespace eaci_ros {
 
 class PlannerNode {
  public:
-  PlannerNode() : private_nh_("~"), tf_listener_(tf_buffer_) {
-    readParameters(private_nh_, params_, options_);
+  PlannerNode() : private_nh_("~"), tf_listener_(tf_buffer_), config_(private_nh_, mutex_, "eaci_planner_node") {
     plan_pub_ = private_nh_.advertise<nav_msgs::Path>("plan", 1, true);
     pheromone_pub_ = private_nh_.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
     std::string map_file;
@@ -71,7 +73,7 @@ class PlannerNode {
   void setMap(const nav_msgs::OccupancyGrid& map) {
     map_ = map;
     if (map_.header.frame_id.empty()) map_.header.frame_id = "map";
-    inflateObstacles(map_, options_.robot_radius, options_.occupied_threshold);
+    inflateObstacles(map_, config_.options().robot_radius, config_.options().occupied_threshold);
     have_map_ = map_.data.size() == static_cast<std::size_t>(map_.info.width) * map_.info.height &&
                 !map_.data.empty() && map_.info.resolution > 0;
     if (!have_map_) ROS_ERROR("eaci_planner_node: the map is empty or malformed; plans will fail until a good one arrives");
@@ -111,31 +113,37 @@ class PlannerNode {
     const PlanCancellation::Scope in_progress(cancellation_);
     response.plan.header.frame_id = map_.header.frame_id;
     response.plan.header.stamp = ros::Time::now();
+    if (!config_.error().empty()) {
+      ROS_ERROR("eaci_planner_node: make_plan: %s: refusing to plan until it is fixed", config_.error().c_str());
+      return true;
+    }
     if (!have_map_) {
       ROS_ERROR("eaci_planner_node: make_plan: no map yet");
       return true;
     }
+    const eaci::Parameters& params = config_.params();
+    const RosPlannerOptions& options = config_.options();
     geometry_msgs::PoseStamped start, goal;
     std::string error;
     if (!inMapFrame(request.start, "start", start, error) || !inMapFrame(request.goal, "goal", goal, error)) {
       ROS_ERROR("eaci_planner_node: make_plan: %s", error.c_str());
       return true;
     }
-    const double tolerance = request.tolerance > 0 ? request.tolerance : options_.default_tolerance;
-    const GridPlan plan = planOnGrid(viewOf(map_, options_.occupied_threshold, params_.allow_unknown), frameOf(map_),
-                                     start, goal, tolerance, params_, options_, cancellation_.flag());
+    const double tolerance = request.tolerance > 0 ? request.tolerance : options.default_tolerance;
+    const GridPlan plan = planOnGrid(viewOf(map_, options.occupied_threshold, params.allow_unknown), frameOf(map_),
+                                     start, goal, tolerance, params, options, cancellation_.flag());
     if (!plan.ok) {
       ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());
       return true;
     }
     ROS_INFO("eaci_planner_node: %s route of %.3f m (%zu poses, %d islands, %d iterations, %lld lost ants)%s%s",
-             eaci::toString(options_.algorithm), plan.result.length * map_.info.resolution, plan.path.poses.size(),
+             eaci::toString(options.algorithm), plan.result.length * map_.info.resolution, plan.path.poses.size(),
              static_cast<int>(plan.result.islands.size()), plan.result.iterations_run, plan.result.lost_ants_total,
              plan.stopped_by == StopReason::kNone ? "" : ", the best so far: ",
              plan.stopped_by == StopReason::kNone ? "" : toString(plan.stopped_by));
     response.plan = plan.path;
-    if (options_.publish_plan) plan_pub_.publish(plan.path);
-    if (options_.visualize_pheromone && !plan.result.pheromone.empty())
+    if (options.publish_plan) plan_pub_.publish(plan.path);
+    if (options.visualize_pheromone && !plan.result.pheromone.empty())
       pheromone_pub_.publish(fieldToGrid(plan.result.pheromone, frameOf(map_), ros::Time::now()));
     return true;
   }
@@ -144,9 +152,8 @@ class PlannerNode {
   ros::NodeHandle private_nh_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
-  eaci::Parameters params_;
-  RosPlannerOptions options_;
-  std::mutex mutex_;
+  std::mutex mutex_;  // plans, map updates and new parameters take turns
+  PlannerConfiguration config_;  // read and changed under mutex_
   nav_msgs::OccupancyGrid map_;
   bool have_map_ = false;
   ros::Subscriber map_sub_;

@@ -2,13 +2,16 @@
 
 #include <XmlRpcValue.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 namespace eaci_ros {
 namespace {
 
-// A parameter server value as the text setParameter() parses.
+// A parameter server value as the text setRosParameter() parses.
 std::string asText(const std::string& name, XmlRpc::XmlRpcValue& value) {
   std::ostringstream text;
   switch (value.getType()) {
@@ -23,68 +26,143 @@ std::string asText(const std::string& name, XmlRpc::XmlRpcValue& value) {
   }
 }
 
-template <typename T>
-T readScalar(const ros::NodeHandle& nh, const std::string& name, T fallback) {
-  if (!nh.hasParam(name)) return fallback;
-  T value = fallback;
-  if (!nh.getParam(name, value)) {
-    // ints are acceptable where doubles are expected
-    if constexpr (std::is_same_v<T, double>) {
-      int as_int = 0;
-      if (nh.getParam(name, as_int)) return as_int;
-    }
-    throw eaci::ParameterError(nh.resolveName(name) + " has the wrong type");
-  }
-  return value;
+
+std::string exactText(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
 }
+
+std::string boolText(bool value) { return value ? "true" : "false"; }
 
 }  // namespace
 
-void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlannerOptions& options) {
+eaci::Parameters rosDefaultParameters() {
+  eaci::Parameters params;
   params.allow_unknown = true;  // the ROS default, as navfn and global_planner
   params.smooth_path = true;    // robots drive the smoothed route
-  if (nh.hasParam("obstacle_cost") && !nh.hasParam("lethal_cost"))
-    params.lethal_cost = readScalar<int>(nh, "obstacle_cost", params.lethal_cost);
-  for (const std::string& name : eaci::parameterNames()) {
-    if (!nh.hasParam(name)) continue;
-    XmlRpc::XmlRpcValue value;
-    nh.getParam(name, value);
-    eaci::setParameter(params, name, asText(nh.resolveName(name), value));
+  return params;
+}
+
+const std::vector<std::string>& rosOptionNames() {
+  static const std::vector<std::string> names = {"algorithm",          "default_tolerance", "occupied_threshold",
+                                                 "publish_plan",       "max_planning_time", "visualize_pheromone",
+                                                 "robot_radius",       "orientation_mode"};
+  return names;
+}
+
+void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
+                     const std::string& text) {
+  if (name == "algorithm") {
+    if (!eaci::parseAlgorithm(text, options.algorithm))
+      throw eaci::ParameterError("algorithm must be eaci, aco or astar (got '" + text + "')");
+  } else if (name == "default_tolerance") {
+    options.default_tolerance = eaci::detail::parseDouble(name, text);
+  } else if (name == "occupied_threshold") {
+    options.occupied_threshold = eaci::detail::parseInt(name, text);
+  } else if (name == "publish_plan") {
+    options.publish_plan = eaci::detail::parseBool(name, text);
+  } else if (name == "max_planning_time") {
+    options.max_planning_time = eaci::detail::parseDouble(name, text);
+  } else if (name == "visualize_pheromone") {
+    options.visualize_pheromone = eaci::detail::parseBool(name, text);
+  } else if (name == "robot_radius") {
+    options.robot_radius = eaci::detail::parseDouble(name, text);
+  } else if (name == "orientation_mode") {
+    try {
+      options.orientation_mode = eaci::orientationModeFromString(text);
+    } catch (const std::invalid_argument& e) {
+      throw eaci::ParameterError("orientation_mode: " + std::string(e.what()));
+    }
+  } else {
+    eaci::setParameter(params, name, text);
   }
+}
+
+std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& name) {
+  if (name == "algorithm") return eaci::toString(options.algorithm);
+  if (name == "default_tolerance") return exactText(options.default_tolerance);
+  if (name == "occupied_threshold") return std::to_string(options.occupied_threshold);
+  if (name == "publish_plan") return boolText(options.publish_plan);
+  if (name == "max_planning_time") return exactText(options.max_planning_time);
+  if (name == "visualize_pheromone") return boolText(options.visualize_pheromone);
+  if (name == "robot_radius") return exactText(options.robot_radius);
+  if (name == "orientation_mode") return std::to_string(static_cast<int>(options.orientation_mode));
+  for (const auto& [parameter, value] : eaci::parameterValues(params)) {
+    if (parameter != name) continue;
+    return std::visit(
+        [](const auto& v) -> std::string {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, bool>) return boolText(v);
+          else if constexpr (std::is_same_v<T, double>) return exactText(v);
+          else if constexpr (std::is_same_v<T, std::string>) return v;
+          else return std::to_string(v);
+        },
+        value);
+  }
+  throw eaci::ParameterError("unknown parameter '" + name + "'");
+}
+
+std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options) {
+  std::string error = eaci::validationError(params);
+  if (!error.empty()) return error;
+  std::ostringstream e;
+  if (!std::isfinite(options.default_tolerance) || options.default_tolerance < 0)
+    e << "default_tolerance must be a distance >= 0 (got " << options.default_tolerance << ")";
+  else if (options.occupied_threshold < 1 || options.occupied_threshold > 100)
+    e << "occupied_threshold must be in 1..100 (got " << options.occupied_threshold << ")";
+  else if (!std::isfinite(options.robot_radius) || options.robot_radius < 0)
+    e << "robot_radius must be a distance >= 0 (got " << options.robot_radius << ")";
+  else if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0)
+    e << "max_planning_time must be >= 0 seconds, 0 = no limit (got " << options.max_planning_time << ")";
+  return e.str();
+}
+
+std::string parameterNamedIn(const std::string& sentence) {
+  std::string best;
+  auto consider = [&](const std::string& name) {
+    const bool prefix = sentence.compare(0, name.size(), name) == 0 &&
+                        (sentence.size() == name.size() || sentence[name.size()] == ' ' || sentence[name.size()] == ':');
+    if (prefix && name.size() > best.size()) best = name;
+  };
+  for (const std::string& name : eaci::parameterNames()) consider(name);
+  for (const std::string& name : rosOptionNames()) consider(name);
+  return best;
+}
+
+std::vector<ParameterProblem> readParameters(const ros::NodeHandle& nh, eaci::Parameters& params,
+                                             RosPlannerOptions& options) {
+  params = rosDefaultParameters();
+  options = RosPlannerOptions{};
+  std::vector<ParameterProblem> problems;
+  const std::string prefix = nh.getNamespace() + "/";
+  auto read = [&](const std::string& name, const std::string& as) {
+    if (!nh.hasParam(name)) return;
+    try {
+      XmlRpc::XmlRpcValue value;
+      nh.getParam(name, value);
+      setRosParameter(params, options, as, asText(as, value));
+    } catch (const eaci::ParameterError& e) {
+      // The sentence starts with the name it was set as; the user wrote `name`.
+      std::string sentence = e.what();
+      if (as != name && sentence.compare(0, as.size(), as) == 0) sentence = name + sentence.substr(as.size());
+      problems.push_back({name, prefix + sentence});
+    }
+  };
+  if (!nh.hasParam("lethal_cost")) read("obstacle_cost", "lethal_cost");
+  for (const std::string& name : eaci::parameterNames()) read(name, name);
+  for (const std::string& name : rosOptionNames()) read(name, name);
   if (params.allow_corner_cutting) {
     ROS_WARN("%s: allow_corner_cutting is for the paper's benchmark only; a robot never cuts corners: ignored",
              nh.getNamespace().c_str());
     params.allow_corner_cutting = false;
   }
-  eaci::validate(params);
-
-  const std::string algorithm = readScalar<std::string>(nh, "algorithm", "eaci");
-  if (!eaci::parseAlgorithm(algorithm, options.algorithm))
-    throw eaci::ParameterError(nh.resolveName("algorithm") + " must be eaci, aco or astar (got '" + algorithm + "')");
-  options.default_tolerance = readScalar<double>(nh, "default_tolerance", options.default_tolerance);
-  options.occupied_threshold = readScalar<int>(nh, "occupied_threshold", options.occupied_threshold);
-  options.publish_plan = readScalar<bool>(nh, "publish_plan", options.publish_plan);
-  options.max_planning_time = readScalar<double>(nh, "max_planning_time", options.max_planning_time);
-  options.visualize_pheromone = readScalar<bool>(nh, "visualize_pheromone", options.visualize_pheromone);
-  options.robot_radius = readScalar<double>(nh, "robot_radius", options.robot_radius);
-  if (nh.hasParam("orientation_mode")) {
-    XmlRpc::XmlRpcValue mode;
-    nh.getParam("orientation_mode", mode);
-    try {
-      options.orientation_mode = eaci::orientationModeFromString(asText(nh.resolveName("orientation_mode"), mode));
-    } catch (const std::invalid_argument& e) {
-      throw eaci::ParameterError(nh.resolveName("orientation_mode") + ": " + e.what());
-    }
+  if (problems.empty()) {
+    const std::string error = rosValidationError(params, options);
+    if (!error.empty()) problems.push_back({parameterNamedIn(error), prefix + error});
   }
-
-  if (!std::isfinite(options.default_tolerance) || options.default_tolerance < 0)
-    throw eaci::ParameterError(nh.resolveName("default_tolerance") + " must be a distance >= 0");
-  if (options.occupied_threshold < 1 || options.occupied_threshold > 100)
-    throw eaci::ParameterError(nh.resolveName("occupied_threshold") + " must be in 1..100");
-  if (!std::isfinite(options.robot_radius) || options.robot_radius < 0)
-    throw eaci::ParameterError(nh.resolveName("robot_radius") + " must be a distance >= 0");
-  if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0)
-    throw eaci::ParameterError(nh.resolveName("max_planning_time") + " must be >= 0 seconds (0 = no limit)");
+  return problems;
 }
 
 }  // namespace eaci_ros

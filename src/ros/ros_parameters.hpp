@@ -5,6 +5,7 @@
 #include <ros/ros.h>
 
 #include <string>
+#include <vector>
 
 #include "eaci/aco/parameters.hpp"
 #include "eaci/path/orientation.hpp"
@@ -23,12 +24,45 @@ struct RosPlannerOptions {
   eaci::OrientationMode orientation_mode = eaci::OrientationMode::kForward;  // global_planner's ~orientation_mode
 };
 
-// Fills `params` and `options` from `nh` (a private namespace). The cost model (neutral_cost,
-// cost_factor, lethal_cost, allow_unknown) is in `params`; allow_unknown defaults to true here,
-// as in navfn and global_planner, and the older name obstacle_cost still sets lethal_cost;
-// smooth_path defaults to true here (a robot drives the smoothed route).
-// Throws eaci::ParameterError with a sentence naming the parameter for a wrong type or value.
-// Corner cutting is always forbidden on a robot, whatever the parameter server says.
-void readParameters(const ros::NodeHandle& nh, eaci::Parameters& params, RosPlannerOptions& options);
+// The core parameters with the ROS layer's defaults: allow_unknown true (as navfn and
+// global_planner), smooth_path true (a robot drives the smoothed route); the rest the paper's.
+eaci::Parameters rosDefaultParameters();
+
+// The names of the ROS options above (algorithm, default_tolerance, ...).
+const std::vector<std::string>& rosOptionNames();
+
+// Sets one core parameter (eaci::setParameter) or ROS option by name from its text form.
+// Throws eaci::ParameterError with a sentence starting with the name for an unknown name or a
+// value of the wrong type; ranges are rosValidationError()'s job.
+void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
+                     const std::string& text);
+
+// The value of a core parameter or ROS option in the text form setRosParameter() reads back
+// (numbers exact, orientation_mode as global_planner's number). Throws eaci::ParameterError for
+// an unknown name.
+std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& name);
+
+// "" when every value is in range, else one sentence starting with the parameter's name.
+std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options);
+
+// The parameter a sentence of setRosParameter() or rosValidationError() is about ("" if none).
+std::string parameterNamedIn(const std::string& sentence);
+
+// A parameter that could not be used, with the sentence that names it (its full name, e.g.
+// "/move_base/EaciGlobalPlanner/aco_rho must be in (0, 1] (got 1.5)").
+struct ParameterProblem {
+  std::string parameter;  // relative name, e.g. "aco_rho"
+  std::string sentence;
+};
+
+// Fills `params` and `options` from `nh` (a private namespace), starting from
+// rosDefaultParameters() and RosPlannerOptions{}. The cost model (neutral_cost, cost_factor,
+// lethal_cost, allow_unknown) is in `params`; the older name obstacle_cost still sets
+// lethal_cost. Each parameter is read on its own, so a bad one leaves the others read; the
+// first bad one (wrong type, unknown word, out of range) is returned, never replaced by a
+// default in silence. Corner cutting is always forbidden on a robot, whatever the parameter
+// server says (a warning).
+std::vector<ParameterProblem> readParameters(const ros::NodeHandle& nh, eaci::Parameters& params,
+                                             RosPlannerOptions& options);
 
 }  // namespace eaci_ros

@@ -1,5 +1,5 @@
 // Headings of the poses along a route, set as global_planner's orientation_mode sets them (none, forward, interpolate,
-// forward_then_interpolate), so move_base users get the behaviour they know.
+// forward_then_interpolate, backward, leftward, rightward), so move_base users get the behaviour they know.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,7 +12,8 @@
 
 namespace eaci {
 
-enum class OrientationMode { kNone, kForward, kInterpolate, kForwardThenInterpolate };
+// In global_planner's order: the numbers are its orientation_mode values 0..6.
+enum class OrientationMode { kNone, kForward, kInterpolate, kForwardThenInterpolate, kBackward, kLeftward, kRightward };
 
 inline const char* toString(OrientationMode mode) {
   switch (mode) {
@@ -20,17 +21,23 @@ inline const char* toString(OrientationMode mode) {
     case OrientationMode::kForward: return "forward";
     case OrientationMode::kInterpolate: return "interpolate";
     case OrientationMode::kForwardThenInterpolate: return "forward_then_interpolate";
+    case OrientationMode::kBackward: return "backward";
+    case OrientationMode::kLeftward: return "leftward";
+    case OrientationMode::kRightward: return "rightward";
   }
   return "?";
 }
 
-// By name, or global_planner's number (0 none, 1 forward, 2 interpolate, 3 forward_then_interpolate);
-// std::invalid_argument otherwise.
+// By name, or global_planner's number (0 none, 1 forward, 2 interpolate, 3 forward_then_interpolate,
+// 4 backward, 5 leftward, 6 rightward); std::invalid_argument otherwise.
 inline OrientationMode orientationModeFromString(const std::string& text) {
   for (auto mode : {OrientationMode::kNone, OrientationMode::kForward, OrientationMode::kInterpolate,
-                    OrientationMode::kForwardThenInterpolate})
+                    OrientationMode::kForwardThenInterpolate, OrientationMode::kBackward, OrientationMode::kLeftward,
+                    OrientationMode::kRightward})
     if (text == toString(mode) || text == std::to_string(static_cast<int>(mode))) return mode;
-  throw std::invalid_argument("'" + text + "' is not one of: none, forward, interpolate, forward_then_interpolate (or 0-3)");
+  throw std::invalid_argument("'" + text +
+                              "' is not one of: none, forward, interpolate, forward_then_interpolate, backward, "
+                              "leftward, rightward (or 0-6)");
 }
 
 namespace detail {
@@ -51,7 +58,9 @@ inline void interpolateHeadings(std::vector<double>& heading, std::size_t first,
 //   forward                   each point faces the next one;
 //   interpolate               turning evenly from the start heading to the goal heading;
 //   forward_then_interpolate  forward, then, over the final stretch whose direction stays within
-//                             0.35 rad of the last segment's, turning evenly to the goal heading.
+//                             0.35 rad of the last segment's, turning evenly to the goal heading;
+//   backward / leftward / rightward  forward turned by pi / -pi/2 / +pi/2: the robot's -x / +y / -y
+//                             axis points along the route (global_planner's signs).
 inline std::vector<double> orientPoints(const std::vector<Eigen::Vector2d>& points, double start_yaw, double goal_yaw,
                                         OrientationMode mode) {
   const std::size_t n = points.size();
@@ -63,7 +72,20 @@ inline std::vector<double> orientPoints(const std::vector<Eigen::Vector2d>& poin
       heading[k] = d.squaredNorm() > 0 ? std::atan2(d.y(), d.x()) : (k > 0 ? heading[k - 1] : start_yaw);
     }
   };
+  const auto faceNextTurnedBy = [&](double turn) {
+    faceNext();
+    for (std::size_t k = 0; k + 1 < n; ++k) heading[k] = std::remainder(heading[k] + turn, 2.0 * M_PI);
+  };
   switch (mode) {
+    case OrientationMode::kBackward:
+      faceNextTurnedBy(M_PI);
+      break;
+    case OrientationMode::kLeftward:
+      faceNextTurnedBy(-M_PI / 2);
+      break;
+    case OrientationMode::kRightward:
+      faceNextTurnedBy(M_PI / 2);
+      break;
     case OrientationMode::kNone:
       heading.front() = start_yaw;
       break;
