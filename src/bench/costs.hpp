@@ -35,7 +35,7 @@ struct CostsOptions {
   std::vector<MapKind> kinds = {MapKind::kRooms, MapKind::kClutter};
   int runs = 0;               // map seeds per generated case; 0 = by size (costsSeedsFor)
   std::string lab_map = "maps/lab.yaml";  // empty: no lab runs
-  int lab_seeds = 5;          // EACI seeds per lab pair (A* runs beside each)
+  int lab_seeds = 10;         // EACI seeds per lab pair (A* runs beside each)
   double budget_s = 60.0;     // a colony run stops between iterations after this long (marked capped)
   bool quick = false;         // sizes 100 and 200, 2 seeds, 2 lab seeds
   // The lab: config/costmap_common_params.yaml (inflation_radius 0.30, cost_scaling_factor 8.0)
