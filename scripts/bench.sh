@@ -5,7 +5,8 @@
 #   sweep  - Figs 11-14 parameter studies and classic ACO's rho/tau0 (about 1-2 min)
 #   scale  - generated maps 50..800 cells, time, memory, gap to A*  (about 1-2 min)
 #   deadline - 800 x 800 maps, wall time against max_planning_time  (about 30 s)
-# Usage: scripts/bench.sh [paper|sweep|scale|deadline|plot ...]   (default: all of them)
+#   costs  - inflated cost maps (the lab, generated 100..800): cost gap to A*, smoothing (a few min)
+# Usage: scripts/bench.sh [paper|sweep|scale|deadline|costs|plot ...]   (default: all of them)
 # Maps are read from ${EACI_MAPS_DIR:-maps/paper}. Timings are only as good as the
 # machine is quiet: the reports record the load average at the start of each run.
 set -euo pipefail
@@ -17,7 +18,7 @@ out=out/bench
 figures=docs/figures
 bench=build/bench/bin/eaci_bench
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale deadline plot)
+[ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale deadline costs plot)
 
 EACI_WITH_ROS=OFF scripts/install_deps.sh python3-matplotlib python3-numpy
 cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_BUILD_TESTS=OFF >/dev/null
@@ -35,15 +36,16 @@ for step in "${steps[@]}"; do
     sweep) "$bench" sweep --maps "$maps" --runs 20 --out "$out" ;;
     scale) "$bench" scale --sizes 50,100,200,400,800 --out "$out" ;;
     deadline) "$bench" deadline --sizes 800 --runs 3 --out "$out" ;;
+    costs) "$bench" costs --lab-map maps/lab.yaml --sizes 100,200,400,800 --out "$out" ;;
     plot)
       results=()
-      for kind in paper sweep scale; do [ -f "$out/$kind.json" ] && results+=("$out/$kind.json"); done
+      for kind in paper sweep scale costs; do [ -f "$out/$kind.json" ] && results+=("$out/$kind.json"); done
       /usr/bin/python3 scripts/plot_benchmarks.py "${results[@]}" "$figures" >/dev/null
       echo "figures in $figures/" ;;
-    *) echo "bench.sh: unknown step '$step' (paper, sweep, scale, deadline, plot)" >&2; exit 2 ;;
+    *) echo "bench.sh: unknown step '$step' (paper, sweep, scale, deadline, costs, plot)" >&2; exit 2 ;;
   esac
 done
 
 echo "Markdown tables:"
-for kind in paper sweep scale deadline; do [ -f "$out/$kind.md" ] && echo "  $out/$kind.md"; done
+for kind in paper sweep scale deadline costs; do [ -f "$out/$kind.md" ] && echo "  $out/$kind.md"; done
 echo "(JSON and CSV beside them; docs/benchmarks.md quotes them)"

@@ -9,6 +9,7 @@ Each JSON file is recognised by its "kind":
             pheromone_<map>_<strategy>.png (Figs 15/16/20/21)
   sweep  -> sweep_<parameter>.png (Figs 11-14), aco_rho.png
   scale  -> scale_time.png, scale_gap.png, scale_memory.png, scale_examples.png
+  costs  -> costs_gap.png (cost over A*'s by map size), costs_lab.png (lab routes on the cost map)
 Needs Debian's python3-matplotlib and python3-numpy (run with /usr/bin/python3).
 """
 
@@ -451,6 +452,111 @@ def plot_scale(data, outdir):
     plot_scale_examples(data, outdir)
 
 
+# ---------------------------------------------------------------- cost-aware figures
+
+COST_STYLE = {
+    "astar": ("0.3", "o", "A*", "--"),
+    "astar-smoothed": ("tab:blue", "D", "A*, smoothed", "-"),
+    "eaci-1t": ("tab:green", "s", "EACI", "-"),
+    "eaci-smoothed-1t": ("tab:purple", "^", "EACI, smoothed", "-"),
+}
+
+
+def draw_costs(ax, rows):
+    """A costmap_2d char map: 0 white, 252 dark grey, 253 (inscribed) light red, 254/255 black."""
+    g = np.asarray(rows, dtype=float)
+    rgb = np.empty(g.shape + (3,))
+    shade = 1.0 - 0.75 * np.clip(g, 0, 252) / 252.0
+    for k in range(3):
+        rgb[..., k] = shade
+    rgb[g == 253] = (1.0, 0.75, 0.75)
+    rgb[g >= 254] = (0.0, 0.0, 0.0)
+    ax.imshow(rgb, interpolation="nearest", origin="upper")
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
+def cost_route(problem, key):
+    v = next((v for v in problem["variants"] if v["key"] == key), None)
+    if v is None or not v["runs"]:
+        return None
+    run = v["runs"][0]
+    return run.get("smoothed_path") or run.get("path")
+
+
+def plot_costs_gap(data, outdir):
+    groups = [g for g in data["groups"] if not g["lab"]]
+    kinds = list(dict.fromkeys(g["kind"] for g in groups))
+    if not kinds:
+        return
+    fig, axes = plt.subplots(1, len(kinds), figsize=(6.4 * len(kinds), 4.8), squeeze=False)
+    for ax, kind in zip(axes[0], kinds):
+        sizes = sorted(g["size"] for g in groups if g["kind"] == kind)
+        ax.axhline(1.0, color="tab:red", lw=0.9, ls=":", label="target: median 1 %")
+        ax.axhline(3.0, color="tab:red", lw=0.9, ls="--", label="target: worst 3 %")
+        ax.axhline(0.0, color="0.3", lw=0.9, label="A* (cheapest 8-connected route)")
+        for key, dx in [("eaci-1t", -0.03), ("eaci-smoothed-1t", 0.0), ("astar-smoothed", 0.03)]:
+            color, marker, label, _ = COST_STYLE[key]
+            xs, med, lo, hi = [], [], [], []
+            for g in sorted((g for g in groups if g["kind"] == kind), key=lambda g: g["size"]):
+                gaps = [r["gap_pct"] for p in g["problems"] for v in p["variants"] if v["key"] == key
+                        for r in v["runs"] if r["gap_pct"] is not None]
+                if not gaps:
+                    continue
+                xs.append(g["size"] * (1 + dx))
+                med.append(float(np.median(gaps)))
+                lo.append(min(gaps))
+                hi.append(max(gaps))
+            ax.plot(xs, med, color=color, marker=marker, ms=7, lw=1.6, label=f"{label}: median, bar = range")
+            ax.vlines(xs, lo, hi, color=color, lw=2.0, alpha=0.6)
+        ax.set_xscale("log")
+        ax.set_xticks(sizes)
+        ax.set_xticklabels([f"{s}×{s}" for s in sizes], fontsize=8)
+        ax.minorticks_off()
+        ax.set_xlabel("map size (cells)")
+        ax.set_ylabel("cost over A*'s (%)")
+        ax.set_title(f"{kind} maps, inflated", fontsize=11)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7.5, loc="upper left")
+    fig.suptitle("Route cost over A*'s on inflated generated maps (smoothed: cost of the straight segments)",
+                 fontsize=12)
+    fig.tight_layout()
+    save(fig, outdir, "costs_gap.png")
+
+
+def plot_costs_lab(data, outdir):
+    lab = next((g for g in data["groups"] if g["lab"]), None)
+    if lab is None or not lab["problems"] or "example_costs" not in lab["problems"][0]:
+        return
+    costs = lab["problems"][0]["example_costs"]
+    wanted = [p for p in lab["problems"] if cost_route(p, "eaci-1t")][:4]
+    fig, axes = plt.subplots(2, 2, figsize=(11.5, 7.6), squeeze=False)
+    for ax in axes.flat[len(wanted):]:
+        ax.axis("off")
+    for ax, p in zip(axes.flat, wanted):
+        draw_costs(ax, costs)
+        for key, lw in [("astar", 2.8), ("eaci-1t", 1.6), ("eaci-smoothed-1t", 1.8)]:
+            route = cost_route(p, key)
+            if route:
+                color, _, label, ls = COST_STYLE[key]
+                draw_route(ax, route, color, label=label, ls=ls, lw=lw)
+        draw_endpoints(ax, p["start"], p["goal"], size=7)
+        ax.set_title(p["name"], fontsize=10)
+    axes[0][0].legend(fontsize=8, loc="lower right")
+    res = lab["resolution"]
+    infl = data["settings"]["lab_inflation_m"]
+    fig.suptitle(f"Lab map ({res} m cells), inflation radius {infl['inflation_radius']} m, inscribed "
+                 f"{infl['inscribed_radius']} m (light red), cost_scaling_factor {infl['cost_scaling_factor']}: "
+                 "seed-1 routes", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.96))
+    save(fig, outdir, "costs_lab.png")
+
+
+def plot_costs(data, outdir):
+    plot_costs_gap(data, outdir)
+    plot_costs_lab(data, outdir)
+
+
 def main(argv):
     if len(argv) < 3:
         sys.stderr.write(__doc__)
@@ -467,6 +573,8 @@ def main(argv):
             plot_sweep(data, outdir)
         elif kind == "scale":
             plot_scale(data, outdir)
+        elif kind == "costs":
+            plot_costs(data, outdir)
         else:
             sys.stderr.write(f"{path}: unknown kind {kind!r}, skipped\n")
     return 0

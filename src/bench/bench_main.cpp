@@ -1,8 +1,10 @@
 // eaci_bench: reproduces the paper's Tables 1-3 (`paper`), its parameter studies and the
 // classic ACO evaporation study (`sweep`), and measures speed and memory on generated maps
-// of growing size (`scale`), and how closely a planning-time limit is kept (`deadline`).
+// of growing size (`scale`), how closely a planning-time limit is kept (`deadline`), and
+// cost-aware planning on inflated cost maps beside A* (`costs`).
 // Each command writes JSON, CSV and Markdown into --out.
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <sstream>
@@ -11,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "costs.hpp"
 #include "deadline.hpp"
 #include "paper_tables.hpp"
 #include "scale.hpp"
@@ -68,6 +71,21 @@ void addDeadlineCommand(CLI::App& app, eaci_bench::DeadlineOptions& o, std::vect
   cmd->add_option("--out", o.out_dir, "output directory");
 }
 
+void addCostsCommand(CLI::App& app, eaci_bench::CostsOptions& o, std::vector<std::string>& kinds) {
+  CLI::App* cmd = app.add_subcommand("costs", "cost-aware planning on inflated cost maps: the lab and generated maps, "
+                                              "A* and EACI with and without smoothing");
+  cmd->add_option("--sizes", o.sizes, "generated map sizes (cells per side; none: --sizes 0)")->delimiter(',')
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--runs", o.runs, "map seeds per kind and size (0 = 20 up to 400 cells, else 10)")->check(CLI::Range(0, 1000));
+  cmd->add_option("--lab-map", o.lab_map, "the lab map (map_server YAML); empty: no lab runs");
+  cmd->add_option("--lab-seeds", o.lab_seeds, "EACI seeds per lab start/goal pair")->check(CLI::Range(1, 1000));
+  cmd->add_option("--budget-s", o.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
+  cmd->add_flag("--quick", o.quick, "sizes 100 and 200, 2 seeds, 2 lab seeds (about a minute)");
+  cmd->add_option("--example-max-size", o.example_max_size, "store cost maps and routes of seed 1 up to this size");
+  cmd->add_option("--out", o.out_dir, "output directory");
+}
+
 // Map kinds named on the command line, or the defaults when none were.
 std::vector<eaci_bench::MapKind> parseKinds(const std::vector<std::string>& texts,
                                             std::vector<eaci_bench::MapKind> defaults) {
@@ -90,11 +108,13 @@ int main(int argc, char** argv) {
   eaci_bench::SweepOptions sweep;
   eaci_bench::ScaleOptions scale;
   eaci_bench::DeadlineOptions deadline;
+  eaci_bench::CostsOptions costs;
   std::vector<std::string> kinds;
   addPaperCommand(app, paper);
   addSweepCommand(app, sweep);
   addScaleCommand(app, scale, kinds);
   addDeadlineCommand(app, deadline, kinds);
+  addCostsCommand(app, costs, kinds);
   CLI11_PARSE(app, argc, argv);
 
   const std::string command_line = joinArguments(argc, argv);
@@ -111,6 +131,12 @@ int main(int argc, char** argv) {
       deadline.command_line = command_line;
       deadline.kinds = parseKinds(kinds, deadline.kinds);
       return eaci_bench::runDeadlineCommand(deadline);
+    }
+    if (app.got_subcommand("costs")) {
+      costs.command_line = command_line;
+      costs.kinds = parseKinds(kinds, costs.kinds);
+      costs.sizes.erase(std::remove(costs.sizes.begin(), costs.sizes.end(), 0), costs.sizes.end());
+      return eaci_bench::runCostsCommand(costs);
     }
     scale.command_line = command_line;
     scale.kinds = parseKinds(kinds, scale.kinds);

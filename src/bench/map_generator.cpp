@@ -13,7 +13,6 @@ namespace eaci_bench {
 namespace {
 
 constexpr int kRoomMin = 10, kRoomMax = 20;  // room width between walls
-constexpr int kDoorMin = 2, kDoorMax = 3;
 constexpr double kClutterMin = 0.20, kClutterMax = 0.30;  // obstacle fraction
 constexpr int kCornerKeepFree = 3;                        // free square at start and goal
 constexpr int kMaxAttempts = 100;
@@ -69,14 +68,14 @@ std::vector<std::pair<int, int>> spansBetween(const std::vector<int>& walls, int
   return spans;
 }
 
-// One door, 2-3 cells wide, somewhere in [first, last] of a wall.
-std::pair<int, int> doorIn(std::pair<int, int> span, Random& random) {
-  const int width = std::min(random.between(kDoorMin, kDoorMax), span.second - span.first + 1);
+// One door, door_min..door_max cells wide, somewhere in [first, last] of a wall.
+std::pair<int, int> doorIn(std::pair<int, int> span, Random& random, const GeneratorOptions& options) {
+  const int width = std::min(random.between(options.door_min, options.door_max), span.second - span.first + 1);
   const int begin = random.between(span.first, span.second - width + 1);
   return {begin, begin + width - 1};
 }
 
-void drawRooms(Canvas& canvas, Random& random) {
+void drawRooms(Canvas& canvas, Random& random, const GeneratorOptions& options) {
   const int n = canvas.size();
   const std::vector<int> rows = wallLines(n, random), cols = wallLines(n, random);
   for (int r : rows)
@@ -86,12 +85,12 @@ void drawRooms(Canvas& canvas, Random& random) {
   // A door in every wall segment between two rooms: every room reaches every neighbour.
   for (int r : rows)
     for (const auto& span : spansBetween(cols, n)) {
-      const auto door = doorIn(span, random);
+      const auto door = doorIn(span, random, options);
       for (int c = door.first; c <= door.second; ++c) canvas.set(r, c, false);
     }
   for (int c : cols)
     for (const auto& span : spansBetween(rows, n)) {
-      const auto door = doorIn(span, random);
+      const auto door = doorIn(span, random, options);
       for (int r = door.first; r <= door.second; ++r) canvas.set(r, c, false);
     }
 }
@@ -141,7 +140,7 @@ bool parseMapKind(const std::string& text, MapKind& kind) {
   return true;
 }
 
-GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed) {
+GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const GeneratorOptions& options) {
   if (size < 2 * kCornerKeepFree) throw std::runtime_error("map size must be at least 6");
   for (int attempt = 0; attempt < kMaxAttempts; ++attempt) {
     GeneratedMap g;
@@ -151,7 +150,7 @@ GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed) {
     g.seed_used = seed + static_cast<std::uint64_t>(attempt);
     Random random(g.seed_used * 1000003ULL + static_cast<std::uint64_t>(size) * 2 + (kind == MapKind::kRooms ? 0 : 1));
     Canvas canvas(size);
-    if (kind == MapKind::kRooms) drawRooms(canvas, random);
+    if (kind == MapKind::kRooms) drawRooms(canvas, random, options);
     else drawClutter(canvas, random);
     g.map = toMap(canvas);
     g.start = eaci::Cell{0, 0};

@@ -1,7 +1,7 @@
 // Seeded test maps for the scale benchmark, start at the top-left corner, goal at the
 // bottom-right, connected under the robot's move rule (no corner cutting):
 //   rooms   - a grid of rooms 10-20 cells wide, separated by 1-cell walls with a 2-3 cell
-//             door into every neighbouring room;
+//             door (GeneratorOptions) into every neighbouring room;
 //   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free.
 // A map whose start and goal are not connected (checked with A*) is drawn again with the
 // next seed.
@@ -32,7 +32,14 @@ struct GeneratedMap {
   double optimum = 0.0;         // A* length, corner cutting forbidden
 };
 
+// What may differ from the scale benchmark's maps: wider doors for `costs`, whose inflation
+// closes doors narrower than 3 cells.
+struct GeneratorOptions {
+  int door_min = 2;  // door widths, cells
+  int door_max = 3;
+};
+
 // size x size cells. Throws std::runtime_error when 100 seeds in a row give no connected map.
-GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed);
+GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const GeneratorOptions& options = {});
 
 }  // namespace eaci_bench

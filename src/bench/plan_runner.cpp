@@ -28,6 +28,8 @@ RunRecord recordFrom(const eaci::PlanResult& result, const eaci::Parameters& par
   run.seed = params.seed;
   run.success = result.success();
   run.length = result.length;
+  run.cost = result.cost;
+  run.smoothed_length = result.smoothed_length;
   run.total_turn_deg = result.total_turn_deg;
   run.iterations_to_converge = result.iterations_to_converge;
   run.iterations_run = result.iterations_run;
@@ -38,6 +40,7 @@ RunRecord recordFrom(const eaci::PlanResult& result, const eaci::Parameters& par
   run.iteration_best_length = result.iteration_best_length;
   run.lost_ants_per_iteration = result.lost_ants_per_iteration;
   run.path = result.path;
+  run.smoothed_path = result.smoothed_path;
   run.islands = result.islands;
   return run;
 }

@@ -16,6 +16,8 @@ struct RunRecord {
   std::uint64_t seed = 0;
   bool success = false;
   double length = std::numeric_limits<double>::infinity();  // cells
+  double cost = std::numeric_limits<double>::infinity();    // PlanResult::cost (the length on a binary map)
+  double smoothed_length = std::numeric_limits<double>::infinity();  // cells, along smoothed_path
   double total_turn_deg = 0.0;
   int iterations_to_converge = 0;  // iteration that first reached the final length (0 for A*)
   int iterations_run = 0;
@@ -31,17 +33,21 @@ struct RunRecord {
   std::vector<int> lost_ants_per_iteration;
   std::vector<double> iteration_end_ms;  // wall time at the end of each iteration
   eaci::CellPath path;
+  eaci::CellPath smoothed_path;    // PlanResult::smoothed_path (= path without smooth_path)
   std::vector<eaci::Cell> islands;
 };
 
 // Every field under its own name (cells as [row, col]); a non-finite number comes out as null.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RunRecord, seed, success, length, total_turn_deg,
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RunRecord, seed, success, length, cost, smoothed_length,
+                                                total_turn_deg,
                                                 iterations_to_converge, iterations_run, lost_ants_total,
                                                 stopped_early, interrupted, time_ms, cpu_ms, time_to_best_ms,
                                                 first_iteration_ms, best_length_so_far, iteration_best_length,
-                                                lost_ants_per_iteration, iteration_end_ms, path, islands)
+                                                lost_ants_per_iteration, iteration_end_ms, path, smoothed_path,
+                                                islands)
 
-// The per-iteration curves and the cells only when asked (they dominate the size).
+// The per-iteration curves and the cells only when asked (they dominate the size); the
+// smoothed route only when it differs from the route.
 nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path);
 // Reads toJson's output back (null as +infinity; fields it left out keep their defaults).
 RunRecord runRecordFromJson(nlohmann::json j);

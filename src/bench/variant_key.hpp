@@ -20,6 +20,8 @@ enum class VariantKey {
   kEaciEarlyAll,   // `scale`: EACI with early stopping, all cores
   kAco1t,          // `scale`: classic ACO, one thread
   kAcoAll,         // `scale`: classic ACO, all cores
+  kAStarSmoothed,  // `costs`: A* with smooth_path
+  kEaciSmoothed1t, // `costs`: EACI with smooth_path, one thread
 };
 
 inline const char* toString(VariantKey key) {
@@ -35,6 +37,8 @@ inline const char* toString(VariantKey key) {
     case VariantKey::kEaciEarlyAll: return "eaci-early-all";
     case VariantKey::kAco1t: return "aco-1t";
     case VariantKey::kAcoAll: return "aco-all";
+    case VariantKey::kAStarSmoothed: return "astar-smoothed";
+    case VariantKey::kEaciSmoothed1t: return "eaci-smoothed-1t";
   }
   return "?";
 }
