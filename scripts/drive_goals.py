@@ -1,0 +1,188 @@
+#!/usr/bin/python3
+"""Drives the simulated car through a running move_base to goals on the lab map and measures each drive.
+
+For each goal, sent as a move_base action from wherever the car stopped last (facing the straight
+line to the goal): the outcome (move_base's final state), the time taken, the distance from the
+car's true position (diff_drive_sim's ~ground_truth, not its noisy odometry) to the goal, the
+number of global plans move_base asked for, the minimum clearance of the car's centre and of its
+footprint from the map's occupied cells along the drive, and whether the footprint ever touched an
+occupied cell.
+
+Footprint clearance is the distance from the car's rectangle (config/costmap_common_params.yaml,
+without padding) to the centre of an occupied cell, less half a cell: contact means <= 0.
+
+Start move_base first (launch/move_base_demo.launch; see docs/ros.md), then:
+    /usr/bin/python3 scripts/drive_goals.py [--rounds 3] [--map maps/lab.yaml] [--json out.json]
+"""
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+import actionlib
+import numpy as np
+import rospy
+import yaml
+from actionlib_msgs.msg import GoalStatus
+from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
+from nav_msgs.msg import Odometry, Path
+
+LAB_GOALS = [(4.4, 2.6), (2.45, 1.5), (1.1, 2.2), (4.2, 0.5), (0.5, 2.6)]  # across the L, into the U, past the cubes
+HALF_LENGTH, HALF_WIDTH = 0.1325, 0.1025  # the WHEELTEC Mini car, 265 x 205 mm
+STATES = {v: k for k, v in GoalStatus.__dict__.items() if k.isupper() and isinstance(v, int)}
+
+
+class OccupiedCells:
+    """The occupied cells of a map_server map (binary P5 PGM, trinary reading), for clearance queries."""
+
+    def __init__(self, yaml_path):
+        meta = yaml.safe_load(open(yaml_path))
+        data = open(os.path.join(os.path.dirname(os.path.abspath(yaml_path)), meta["image"]), "rb").read()
+        tokens, pos = [], 0
+        while len(tokens) < 4:  # P5 width height maxval, comments skipped
+            end = data.index(b"\n", pos)
+            line = data[pos:end].split(b"#")[0]
+            tokens += line.split()
+            pos = end + 1
+        width, height = int(tokens[1]), int(tokens[2])
+        pixels = np.frombuffer(data[-width * height:], dtype=np.uint8).reshape(height, width)
+        occupied = (255 - pixels) / 255.0 > meta.get("occupied_thresh", 0.65)
+        if meta.get("negate", 0):
+            occupied = pixels / 255.0 > meta.get("occupied_thresh", 0.65)
+        self.occupied = np.flipud(occupied)  # row 0 = lowest y
+        self.res = meta["resolution"]
+        self.ox, self.oy = meta["origin"][:2]
+
+    def nearby(self, x, y, radius):
+        """Centres (N x 2) of occupied cells within a square of half-side `radius` around (x, y)."""
+        c0 = max(int((x - radius - self.ox) / self.res), 0)
+        c1 = min(int((x + radius - self.ox) / self.res) + 1, self.occupied.shape[1])
+        r0 = max(int((y - radius - self.oy) / self.res), 0)
+        r1 = min(int((y + radius - self.oy) / self.res) + 1, self.occupied.shape[0])
+        rows, cols = np.nonzero(self.occupied[r0:r1, c0:c1])
+        return np.column_stack((self.ox + (cols + c0 + 0.5) * self.res, self.oy + (rows + r0 + 0.5) * self.res))
+
+    def clearances(self, x, y, yaw):
+        """(centre clearance, footprint clearance) in metres, capped at 0.6 m."""
+        cells = self.nearby(x, y, 0.6)
+        if len(cells) == 0:
+            return 0.6, 0.6
+        d = cells - (x, y)
+        centre = float(np.min(np.hypot(d[:, 0], d[:, 1])))
+        c, s = math.cos(yaw), math.sin(yaw)
+        along, across = d[:, 0] * c + d[:, 1] * s, -d[:, 0] * s + d[:, 1] * c
+        outside = np.hypot(np.maximum(np.abs(along) - HALF_LENGTH, 0), np.maximum(np.abs(across) - HALF_WIDTH, 0))
+        return min(centre, 0.6), min(float(np.min(outside)) - self.res / 2, 0.6)
+
+
+class Drive:
+    def __init__(self, cells):
+        self.cells = cells
+        self.pose = None
+        self.reset()
+        rospy.Subscriber("/diff_drive_sim/ground_truth", Odometry, self.on_truth, queue_size=50)
+        self.plan_topics = []
+        self.trace = []  # (t, x, y, yaw) of the true pose, every drive, for --trace
+        self.plan_log = []  # (t, [(x, y), ...]) of every global plan, for --trace
+
+    def reset(self):
+        self.min_centre = self.min_footprint = float("inf")
+        self.contacts = 0
+        self.plans = 0
+
+    def on_truth(self, msg):
+        p, q = msg.pose.pose.position, msg.pose.pose.orientation
+        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        self.pose = (p.x, p.y, yaw)
+        self.trace.append((msg.header.stamp.to_sec(), p.x, p.y, yaw))
+        centre, footprint = self.cells.clearances(p.x, p.y, yaw)
+        self.min_centre = min(self.min_centre, centre)
+        self.min_footprint = min(self.min_footprint, footprint)
+        if footprint <= 0:
+            self.contacts += 1
+
+    def on_plan(self, msg):
+        if msg.poses:
+            self.plans += 1
+            self.plan_log.append((msg.header.stamp.to_sec(), [(p.pose.position.x, p.pose.position.y) for p in msg.poses]))
+
+    def watch_plans(self):
+        """Counts the global planner's published plans (…/plan topics of move_base's global planner)."""
+        for topic, kind in rospy.get_published_topics("/move_base"):
+            if kind == "nav_msgs/Path" and topic.endswith("/plan") and topic not in self.plan_topics:
+                rospy.Subscriber(topic, Path, self.on_plan, queue_size=10)
+                self.plan_topics.append(topic)
+
+
+def goal_message(x, y, yaw):
+    goal = MoveBaseGoal()
+    goal.target_pose.header.frame_id = "map"
+    goal.target_pose.header.stamp = rospy.Time.now()
+    goal.target_pose.pose.position.x, goal.target_pose.pose.position.y = x, y
+    goal.target_pose.pose.orientation.z, goal.target_pose.pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
+    return goal
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--map", default=os.path.join(os.path.dirname(__file__), "..", "maps", "lab.yaml"))
+    parser.add_argument("--rounds", type=int, default=1, help="times to visit the goal list")
+    parser.add_argument("--timeout", type=float, default=120.0, help="s per goal before it is cancelled")
+    parser.add_argument("--goals", help="x,y;x,y;... (default: the five lab goals)")
+    parser.add_argument("--json", help="write every drive's record here")
+    parser.add_argument("--trace", help="write the car's true poses here (CSV: t,x,y,yaw) and the global plans beside it (<name>_plans.json)")
+    args = parser.parse_args()
+    goals = LAB_GOALS if not args.goals else [tuple(float(v) for v in g.split(",")) for g in args.goals.split(";")]
+
+    rospy.init_node("drive_goals", anonymous=True)
+    drive = Drive(OccupiedCells(args.map))
+    client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
+    if not client.wait_for_server(rospy.Duration(60)):
+        sys.exit("drive_goals: no move_base action server within 60 s")
+    while drive.pose is None and not rospy.is_shutdown():
+        rospy.sleep(0.1)
+    drive.watch_plans()
+    records = []
+    for round_index in range(args.rounds):
+        for gx, gy in goals:
+            x, y, _ = drive.pose
+            yaw = math.atan2(gy - y, gx - x)
+            drive.reset()
+            start = time.time()
+            client.send_goal(goal_message(gx, gy, yaw))
+            finished = client.wait_for_result(rospy.Duration(args.timeout))
+            if not finished:
+                client.cancel_goal()
+                client.wait_for_result(rospy.Duration(5))
+            rospy.sleep(0.3)  # the last plan and poses arrive
+            state = STATES.get(client.get_state(), str(client.get_state())) if finished else "TIMEOUT"
+            error = math.dist(drive.pose[:2], (gx, gy))
+            record = dict(round=round_index + 1, goal=[gx, gy], state=state, seconds=round(time.time() - start, 1),
+                          final_error_m=round(error, 3), plans=drive.plans,
+                          min_centre_clearance_m=round(drive.min_centre, 3),
+                          min_footprint_clearance_m=round(drive.min_footprint, 3), contact_samples=drive.contacts)
+            records.append(record)
+            print("round %d goal (%.2f, %.2f): %s in %.1f s, %.3f m from the goal, %d plans, min clearance centre "
+                  "%.3f m, footprint %.3f m, %d contact samples" % (
+                      round_index + 1, gx, gy, state, record["seconds"], error, drive.plans, drive.min_centre,
+                      drive.min_footprint, drive.contacts), flush=True)
+            drive.watch_plans()
+    reached = sum(r["state"] == "SUCCEEDED" for r in records)
+    print("reached %d of %d goals; min clearance centre %.3f m, footprint %.3f m; %d contact samples" % (
+        reached, len(records), min(r["min_centre_clearance_m"] for r in records),
+        min(r["min_footprint_clearance_m"] for r in records), sum(r["contact_samples"] for r in records)))
+    if args.trace:
+        with open(args.trace, "w") as out:
+            out.write("t,x,y,yaw\n")
+            out.writelines("%.3f,%.4f,%.4f,%.4f\n" % row for row in drive.trace)
+        with open(os.path.splitext(args.trace)[0] + "_plans.json", "w") as out:
+            json.dump(drive.plan_log, out)
+    if args.json:
+        with open(args.json, "w") as out:
+            json.dump(records, out, indent=1)
+
+
+if __name__ == "__main__":
+    main()

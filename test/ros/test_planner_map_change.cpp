@@ -1,0 +1,154 @@
+// A map that changes under eaci_planner_node (see planner_map_change.test): the node plans on
+// the `map` topic, and the test publishes maps that grow, move and change between requests, as
+// a SLAM map or a rolling window does, and one while a plan is running. Every answer must be a
+// valid route on the map current when the plan started, never a crash or a route on stale cells.
+#include <gtest/gtest.h>
+#include <nav_msgs/GetPlan.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/ros.h>
+
+#include <atomic>
+#include <string>
+#include <thread>
+
+#include "eaci/io/occupancy_map.hpp"
+#include "grid_conversion.hpp"
+#include "route_check.hpp"
+
+namespace {
+
+const char* kService = "/eaci_planner_node/make_plan";
+
+geometry_msgs::PoseStamped pose(double x, double y) {
+  geometry_msgs::PoseStamped p;
+  p.header.frame_id = "map";
+  p.pose.position.x = x;
+  p.pose.position.y = y;
+  p.pose.orientation.w = 1.0;
+  return p;
+}
+
+// A walled room of `width` x `height` cells at 0.1 m with its bottom-left corner at `origin`;
+// `wall_col` >= 0 adds a wall across the room at that column with a one-cell door at
+// `door_row` (rows from the top).
+eaci::OccupancyMap room(int width, int height, Eigen::Vector2d origin, int wall_col = -1, int door_row = -1) {
+  eaci::OccupancyMap map;
+  map.width = width;
+  map.height = height;
+  map.resolution = 0.1;
+  map.origin = origin;
+  map.cells.assign(static_cast<std::size_t>(width) * height, eaci::kFreeValue);
+  for (int r = 0; r < height; ++r)
+    for (int c = 0; c < width; ++c) {
+      const bool border = r == 0 || c == 0 || r == height - 1 || c == width - 1;
+      const bool wall = c == wall_col && r != door_row;
+      if (border || wall) map.cells[static_cast<std::size_t>(r) * width + c] = eaci::kOccupiedValue;
+    }
+  return map;
+}
+
+class MapChange : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);
+    ASSERT_TRUE(ros::service::waitForService(kService, ros::Duration(30.0)));
+  }
+
+  // Publishes `map` and waits until the node plans on it: a probe request from `probe_start`
+  // to `probe_goal` (free on `map` only, or routed differently) must come back valid on it.
+  void publish(const eaci::OccupancyMap& map) {
+    map_pub_.publish(eaci_ros::toOccupancyGrid(map, "map"));
+    ros::Duration(0.5).sleep();  // the node's map callback runs on its own spinner
+  }
+
+  nav_msgs::GetPlan::Response plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal) {
+    nav_msgs::GetPlan srv;
+    srv.request.start = start;
+    srv.request.goal = goal;
+    EXPECT_TRUE(ros::service::call(kService, srv)) << "the service call itself failed";
+    return srv.response;
+  }
+
+  static std::string defect(const eaci::OccupancyMap& map, const nav_msgs::Path& path, double sx, double sy,
+                            double gx, double gy) {
+    return eaci_test::routeDefect(map, path, *map.worldToCell({sx, sy}), *map.worldToCell({gx, gy}));
+  }
+
+  ros::NodeHandle nh_;
+  ros::Publisher map_pub_;
+};
+
+}  // namespace
+
+TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
+  // 1. A 3 x 2 m room at the origin, open.
+  const eaci::OccupancyMap small = room(30, 20, {0.0, 0.0});
+  publish(small);
+  auto response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  ASSERT_GE(response.plan.poses.size(), 2u);
+  EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
+  // A goal beyond this map is refused.
+  EXPECT_TRUE(plan(pose(0.35, 0.35), pose(4.55, 1.55)).plan.poses.empty());
+
+  // 2. The map grows to 6 x 4 m and its origin moves to (-1, -1) (the same world point is now
+  //    another cell); a wall with a door at the top now stands at x = 1.55 m, across the straight
+  //    line of the first route. The goal off the first map is now reachable.
+  const eaci::OccupancyMap grown = room(60, 40, {-1.0, -1.0}, /*wall_col=*/25, /*door_row=*/5);
+  publish(grown);
+  response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  ASSERT_GE(response.plan.poses.size(), 2u);
+  EXPECT_EQ(defect(grown, response.plan, 0.35, 0.35, 2.55, 1.55), "");
+  // Through the door (row 5 from the top: y = -1 + (40 - 5 - 0.5) x 0.1 = 2.45 m).
+  double highest = -1e9;
+  for (const auto& p : response.plan.poses) highest = std::max(highest, p.pose.position.y);
+  EXPECT_GT(highest, 2.35) << "the route did not go through the door of the new wall";
+  response = plan(pose(0.35, 0.35), pose(4.55, 1.55));
+  ASSERT_GE(response.plan.poses.size(), 2u);
+  EXPECT_EQ(defect(grown, response.plan, 0.35, 0.35, 4.55, 1.55), "");
+
+  // 3. The map shrinks again (a rolling window moving away): the far goal is refused, the near
+  //    one is planned on the small map's cells, and a start now off the map is refused.
+  publish(small);
+  EXPECT_TRUE(plan(pose(0.35, 0.35), pose(4.55, 1.55)).plan.poses.empty());
+  EXPECT_TRUE(plan(pose(-0.55, -0.55), pose(1.55, 1.55)).plan.poses.empty());
+  response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  ASSERT_GE(response.plan.poses.size(), 2u);
+  EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
+}
+
+TEST_F(MapChange, AMapArrivingDuringAPlanIsUsedByTheNextPlan) {
+  // A larger room with a wall, planned with every iteration (see planner_map_change.test: many
+  // iterations) while a different map arrives: the plan in progress finishes on the map it
+  // started with (the node swaps maps between plans), the next one plans on the new map.
+  const eaci::OccupancyMap before = room(120, 80, {0.0, 0.0}, /*wall_col=*/60, /*door_row=*/70);
+  const eaci::OccupancyMap after = room(120, 80, {0.0, 0.0}, /*wall_col=*/60, /*door_row=*/10);
+  publish(before);
+  std::atomic<bool> planned{false};
+  nav_msgs::GetPlan::Response during;
+  std::thread request([&] {
+    during = plan(pose(1.05, 4.05), pose(10.95, 4.05));
+    planned = true;
+  });
+  ros::Duration(0.05).sleep();
+  map_pub_.publish(eaci_ros::toOccupancyGrid(after, "map"));
+  request.join();
+  ASSERT_TRUE(planned);
+  ASSERT_GE(during.plan.poses.size(), 2u);
+  const std::string on_before = defect(before, during.plan, 1.05, 4.05, 10.95, 4.05);
+  const std::string on_after = defect(after, during.plan, 1.05, 4.05, 10.95, 4.05);
+  EXPECT_TRUE(on_before.empty() || on_after.empty())
+      << "the route is valid on neither map: " << on_before << " / " << on_after;
+
+  ros::Duration(0.5).sleep();
+  const auto next = plan(pose(1.05, 4.05), pose(10.95, 4.05));
+  ASSERT_GE(next.plan.poses.size(), 2u);
+  EXPECT_EQ(defect(after, next.plan, 1.05, 4.05, 10.95, 4.05), "");
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_planner_map_change");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
