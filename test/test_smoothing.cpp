@@ -54,6 +54,24 @@ TEST(Smoothing, TakesNoShortcutThatCostsMoreThanTheRoute) {
   EXPECT_LE(cost, 4.0 + 1e-9);
 }
 
+TEST(Smoothing, TakesNoShortcutNearerTheWallsThanTheRoute) {
+  // 4 x 7 cells of cost 0 but (1,2), cost 30 (as next to a wall on a costmap). The route goes
+  // down column 0 and along row 3: (0,0) ... (3,0), (3,1) ... (3,6), cost 9. The line
+  // (0,0) -> (3,6) would be cheaper (6.708 plus a surcharge of 1.8 per cell of length inside
+  // (1,2)) but enters (1,2); so does (0,0) -> (3,3), which touches it at a corner, and
+  // (0,0) -> (3,4), which crosses it. (0,0) -> (3,2) passes (0,0), (1,0), (1,1), (2,1), (2,2),
+  // (3,2) only. Hand-computed result: (0,0), (3,2), then straight along row 3 to (3,6).
+  CostGrid grid = open(4, 7);
+  grid.setCost(Cell{1, 2}, 30);
+  const CellPath route{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {3, 6}};
+  ASSERT_DOUBLE_EQ(eaci::routeCost(grid, route), 9.0);
+  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 6}), 30);
+  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 3}), 30);
+  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 2}), 0);
+  ASSERT_LT(eaci::segmentCost(grid, Cell{0, 0}, Cell{3, 6}), 9.0);  // cheaper, yet not taken
+  EXPECT_EQ(eaci::smoothRoute(grid, route), (CellPath{{0, 0}, {3, 2}, {3, 6}}));
+}
+
 TEST(Smoothing, PlannerSmoothsOnlyWhenAsked) {
   const CostGrid grid = open(10, 10);
   eaci::Parameters p;

@@ -12,6 +12,7 @@
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/grid_view.hpp"
+#include "eaci/grid/inflation.hpp"
 #include "eaci/grid/map_frame.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/path/orientation.hpp"
@@ -39,6 +40,17 @@ eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshol
 // occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles
 // (the core's exact distance transform, eaci/grid/distance_transform.hpp).
 void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied_threshold);
+
+// The grid as costmap_2d's inflation layer would cost it (eaci/grid/inflation.hpp): occupied
+// cells (at or above `occupied_threshold`) 254, unknown 255, cells within the inscribed radius
+// 253, then the exponential decay out to the inflation radius. Row 0 = top, as costView() reads it.
+std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold,
+                                          const eaci::InflationParameters& inflation);
+
+// inflatedCostsOf()'s costs (of a grid `width` x `height`) as the planners read a costmap: from
+// `lethal_cost` up obstacles, 255 unknown following `allow_unknown`.
+eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int height, int lethal_cost,
+                        bool allow_unknown);
 
 // The route as poses in the map frame: the start pose's position first, cell centres (with
 // extra poses along long straight segments of a smoothed route), the goal pose (position and

@@ -4,7 +4,9 @@
 //   ~frame_id (string)   frame of a map loaded from ~map_file (default "map"); it is
 //                        published latched on `map` for RViz and other nodes
 //   every core parameter and the ROS options of ros_parameters.hpp under ~ (~robot_radius
-//   grows the obstacles so that a robot of that radius, planned as a point, keeps clear);
+//   grows the obstacles so that a robot of that radius, planned as a point, keeps clear;
+//   ~inflation_radius > 0 and ~cost_scaling_factor add costmap_2d's inflation costs around them,
+//   so routes keep off walls as move_base's do);
 //   dynamic_reconfigure (cfg/EaciPlanner.cfg) changes them at run time, between two plans. A bad
 //   value is named on every request, which fails, until it is fixed (planner_configuration.hpp).
 // Services: ~make_plan (nav_msgs/GetPlan), ~cancel (std_srvs/Trigger: the plan in progress
@@ -73,7 +75,17 @@ class PlannerNode {
   void setMap(const nav_msgs::OccupancyGrid& map) {
     map_ = map;
     if (map_.header.frame_id.empty()) map_.header.frame_id = "map";
-    inflateObstacles(map_, config_.options().robot_radius, config_.options().occupied_threshold);
+    const RosPlannerOptions& options = config_.options();
+    costs_.clear();
+    if (options.inflation_radius > 0) {
+      eaci::InflationParameters inflation;
+      inflation.inflation_radius = options.inflation_radius;
+      inflation.inscribed_radius = options.robot_radius;
+      inflation.cost_scaling_factor = options.cost_scaling_factor;
+      costs_ = inflatedCostsOf(map_, options.occupied_threshold, inflation);
+    } else {
+      inflateObstacles(map_, options.robot_radius, options.occupied_threshold);
+    }
     have_map_ = map_.data.size() == static_cast<std::size_t>(map_.info.width) * map_.info.height &&
                 !map_.data.empty() && map_.info.resolution > 0;
     if (!have_map_) ROS_ERROR("eaci_planner_node: the map is empty or malformed; plans will fail until a good one arrives");
@@ -130,8 +142,12 @@ class PlannerNode {
       return true;
     }
     const double tolerance = request.tolerance > 0 ? request.tolerance : options.default_tolerance;
-    const GridPlan plan = planOnGrid(viewOf(map_, options.occupied_threshold, params.allow_unknown), frameOf(map_),
-                                     start, goal, tolerance, params, options, cancellation_.flag());
+    const eaci::GridView view =
+        costs_.empty() ? viewOf(map_, options.occupied_threshold, params.allow_unknown)
+                       : costView(costs_, static_cast<int>(map_.info.width), static_cast<int>(map_.info.height),
+                                  params.lethal_cost, params.allow_unknown);
+    const GridPlan plan =
+        planOnGrid(view, frameOf(map_), start, goal, tolerance, params, options, cancellation_.flag());
     if (!plan.ok) {
       ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());
       return true;
@@ -155,6 +171,7 @@ class PlannerNode {
   std::mutex mutex_;  // plans, map updates and new parameters take turns
   PlannerConfiguration config_;  // read and changed under mutex_
   nav_msgs::OccupancyGrid map_;
+  std::vector<std::uint8_t> costs_;  // with ~inflation_radius: map_ as costmap_2d costs, row 0 = top
   bool have_map_ = false;
   ros::Subscriber map_sub_;
   ros::Publisher map_pub_, plan_pub_, pheromone_pub_;

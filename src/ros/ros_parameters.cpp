@@ -48,7 +48,8 @@ eaci::Parameters rosDefaultParameters() {
 const std::vector<std::string>& rosOptionNames() {
   static const std::vector<std::string> names = {"algorithm",          "default_tolerance", "occupied_threshold",
                                                  "publish_plan",       "max_planning_time", "visualize_pheromone",
-                                                 "robot_radius",       "orientation_mode"};
+                                                 "robot_radius",       "orientation_mode",  "inflation_radius",
+                                                 "cost_scaling_factor"};
   return names;
 }
 
@@ -69,6 +70,10 @@ void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const
     options.visualize_pheromone = eaci::detail::parseBool(name, text);
   } else if (name == "robot_radius") {
     options.robot_radius = eaci::detail::parseDouble(name, text);
+  } else if (name == "inflation_radius") {
+    options.inflation_radius = eaci::detail::parseDouble(name, text);
+  } else if (name == "cost_scaling_factor") {
+    options.cost_scaling_factor = eaci::detail::parseDouble(name, text);
   } else if (name == "orientation_mode") {
     try {
       options.orientation_mode = eaci::orientationModeFromString(text);
@@ -88,6 +93,8 @@ std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOpt
   if (name == "max_planning_time") return exactText(options.max_planning_time);
   if (name == "visualize_pheromone") return boolText(options.visualize_pheromone);
   if (name == "robot_radius") return exactText(options.robot_radius);
+  if (name == "inflation_radius") return exactText(options.inflation_radius);
+  if (name == "cost_scaling_factor") return exactText(options.cost_scaling_factor);
   if (name == "orientation_mode") return std::to_string(static_cast<int>(options.orientation_mode));
   for (const auto& [parameter, value] : eaci::parameterValues(params)) {
     if (parameter != name) continue;
@@ -114,6 +121,13 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
     e << "occupied_threshold must be in 1..100 (got " << options.occupied_threshold << ")";
   else if (!std::isfinite(options.robot_radius) || options.robot_radius < 0)
     e << "robot_radius must be a distance >= 0 (got " << options.robot_radius << ")";
+  else if (!std::isfinite(options.inflation_radius) || options.inflation_radius < 0)
+    e << "inflation_radius must be a distance >= 0 (got " << options.inflation_radius << ")";
+  else if (options.inflation_radius > 0 && options.robot_radius > options.inflation_radius)
+    e << "inflation_radius must be at least robot_radius (got " << options.inflation_radius << " < "
+      << options.robot_radius << ")";
+  else if (!std::isfinite(options.cost_scaling_factor) || options.cost_scaling_factor < 0)
+    e << "cost_scaling_factor must be >= 0 (got " << options.cost_scaling_factor << ")";
   else if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0)
     e << "max_planning_time must be >= 0 seconds, 0 = no limit (got " << options.max_planning_time << ")";
   return e.str();

@@ -21,6 +21,11 @@ struct RosPlannerOptions {
   double max_planning_time = 5.0;   // s; the best route so far is returned when it runs out; 0 = no limit
   bool visualize_pheromone = false; // publish the final pheromone as a nav_msgs/OccupancyGrid
   double robot_radius = 0.0;        // m, planner node only: obstacles grow by it (the plugin has the costmap's inflation)
+  // Planner node only, costmap_2d's inflation layer on the map it plans on: with inflation_radius > 0,
+  // cells within robot_radius of an obstacle are inscribed obstacles (253) and cells out to
+  // inflation_radius cost 252 x exp(-cost_scaling_factor x (distance - robot_radius)), so routes keep off walls.
+  double inflation_radius = 0.0;    // m; 0 = no costs, obstacles grown by robot_radius only
+  double cost_scaling_factor = 10.0;  // 1/m, costmap_2d's default
   eaci::OrientationMode orientation_mode = eaci::OrientationMode::kForward;  // global_planner's ~orientation_mode
 };
 

@@ -1,7 +1,9 @@
 // A drivable route from a grid route: line-of-sight shortcuts over the 8-connected cells
 // (beyond the paper; off for its benchmarks). A shortcut is taken only when the straight
-// segment touches no obstacle cell, corners included, and costs no more than the stretch of
-// route it replaces, so the smoothed route is never costlier and never nearer a lethal cell.
+// segment touches no obstacle cell, corners included, costs no more than the stretch of route
+// it replaces, and enters no cell costlier than the costliest cell of that stretch: the
+// smoothed route is never costlier, and on a costmap never nearer the walls, than the grid
+// route (on a map without costs only the first two conditions bite).
 #pragma once
 
 #include <algorithm>
@@ -65,6 +67,21 @@ inline double segmentCost(const CostGrid& grid, Cell from, Cell to) {
   return cost;
 }
 
+// The highest cell cost (CostGrid::cost) among the cells the straight segment passes through or
+// touches at a corner; 255 if it touches an obstacle or leaves the map.
+inline int segmentPeakCost(const CostGrid& grid, Cell from, Cell to) {
+  int peak = 0;
+  traverseSegment(from, to, [&](Cell c, double) {
+    if (!grid.isFree(c)) {
+      peak = 255;
+      return false;
+    }
+    peak = std::max<int>(peak, grid.cost(c));
+    return true;
+  });
+  return peak;
+}
+
 // Where a straight segment between two cell centres crosses each cell: the middle of its
 // stretch inside every cell after `from` that it passes through (cells it only touches at a
 // corner are skipped), as fractions t of the segment, ending with t = 1 at `to`. Poses there
@@ -104,9 +121,12 @@ inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route) {
   while (i + 1 < route.size()) {
     std::size_t best = i + 1;
     double stretch_cost = moveCost(i + 1);
+    int stretch_peak = std::max<int>(grid.cost(route[i]), grid.cost(route[i + 1]));
     for (std::size_t j = i + 2; j < route.size(); ++j) {
       stretch_cost += moveCost(j);
+      stretch_peak = std::max<int>(stretch_peak, grid.cost(route[j]));
       if (segmentCost(grid, route[i], route[j]) > stretch_cost + 1e-9) break;
+      if (segmentPeakCost(grid, route[i], route[j]) > stretch_peak) break;
       best = j;
     }
     kept.push_back(route[best]);
