@@ -6,7 +6,9 @@
 #include <std_msgs/Bool.h>
 #include <tf2/utils.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "eaci/io/map_io.hpp"
@@ -20,6 +22,22 @@ struct Watch {
   int collisions = 0;
   double last_x = 0.0, last_y = 0.0;
   std::string first_collision;
+  double min_clearance = 1e9;  // m, from the centre to the nearest occupied cell's centre
+
+  // The distance from (x, y) to the nearest occupied cell centre within 1 m (1 m if none).
+  double clearance(double x, double y) const {
+    const auto cell = map.worldToCell({x, y});
+    if (!cell) return 0.0;
+    const int reach = static_cast<int>(std::ceil(1.0 / map.resolution));
+    double best = 1.0;
+    for (int r = std::max(0, cell->row - reach); r <= std::min(map.height - 1, cell->row + reach); ++r)
+      for (int c = std::max(0, cell->col - reach); c <= std::min(map.width - 1, cell->col + reach); ++c) {
+        if (map.cells[static_cast<std::size_t>(r) * map.width + c] == eaci::kFreeValue) continue;
+        const Eigen::Vector2d centre = map.cellToWorld(eaci::Cell{r, c});
+        best = std::min(best, std::hypot(centre.x() - x, centre.y() - y));
+      }
+    return best;
+  }
 
   bool obstacleAt(double x, double y) const {
     const auto cell = map.worldToCell({x, y});
@@ -33,6 +51,7 @@ struct Watch {
     ++poses;
     last_x = x;
     last_y = y;
+    min_clearance = std::min(min_clearance, clearance(x, y));
     const double c = std::cos(yaw), s = std::sin(yaw);
     const double corners[5][2] = {{0, 0}, {0.1325, 0.1025}, {0.1325, -0.1025}, {-0.1325, 0.1025}, {-0.1325, -0.1025}};
     for (const auto& k : corners) {
@@ -70,6 +89,13 @@ TEST(RobotDrive, ReachesTheGoalWithoutTouchingAnObstacle) {
   EXPECT_TRUE(watch.arrived) << "no arrival within 120 s; last pose (" << watch.last_x << ", " << watch.last_y << ")";
   EXPECT_GT(watch.poses, 100);
   EXPECT_EQ(watch.collisions, 0) << "first contact at " << watch.first_collision;
+  // The planner costs the lab like move_base's costmap (robot_radius 0.17 m inscribed, inflation
+  // to 0.30 m): the cheapest route keeps to the middle of the lab's 0.6 m gaps, so the car's
+  // centre keeps at least `min_clearance` from every obstacle cell centre (robot_drive.test).
+  double min_clearance = 0.0;
+  private_nh.param("min_clearance", min_clearance, 0.0);
+  std::printf("robot_drive: minimum clearance of the car's centre %.3f m\n", watch.min_clearance);
+  EXPECT_GE(watch.min_clearance, min_clearance);
   // The follower's goal tolerance is 5 cm on odometry; the noise-free encoders add millimetres.
   EXPECT_LT(std::hypot(watch.last_x - goal_x, watch.last_y - goal_y), 0.08);
 }
