@@ -177,12 +177,12 @@ def probe(args, image):
 def compare(base_path, other_path):
     """Per request and in sum: the other run's turn and time over the base run's, both clearances."""
     base, other = json.load(open(base_path)), json.load(open(other_path))
-    b_name, o_name = base["planner"], other["planner"]
+    b_name, o_name = base["planner"].split("/")[-1], other["planner"].split("/")[-1]
     print("| start -> goal | %s: length, turn, clearance, ms | %s: length, turn, clearance, ms | turn ratio | time ratio |"
           % (b_name, o_name))
     print("|---|---|---|---|---|")
     turn_ratios, time_ratios, b_turn, o_turn, b_ms, o_ms = [], [], 0.0, 0.0, 0.0, 0.0
-    b_clear, o_clear, less_clear = math.inf, math.inf, 0
+    b_clear, o_clear, less_clear, shortfall = math.inf, math.inf, 0, 0.0
     cell = lambda r: ("%.2f m, %.0f°, %.3f m, %.0f" % (r["length"], r["turn"], r["clearance"], r["ms"])
                       if r["poses"] >= 2 else "no plan, %.0f ms" % r["ms"])
     for b, o in zip(base["results"], other["results"]):
@@ -196,14 +196,15 @@ def compare(base_path, other_path):
             b_turn, o_turn, b_ms, o_ms = b_turn + b["turn"], o_turn + o["turn"], b_ms + b["ms"], o_ms + o["ms"]
             b_clear, o_clear = min(b_clear, b["clearance"]), min(o_clear, o["clearance"])
             less_clear += o["clearance"] < b["clearance"] - 1e-9
+            shortfall = max(shortfall, b["clearance"] - o["clearance"])
         print("| (%.2f, %.2f) -> (%.2f, %.2f) | %s | %s | %.2f | %.2f |"
               % (*b["start"], *b["goal"], cell(b), cell(o), turn_ratio, time_ratio))
     if turn_ratios:
         print("\n%d requests planned by both. turn %s/%s: median %.2f, max %.2f, total %.2f (%.0f° / %.0f°); "
-              "min clearance %s %.3f m, %s %.3f m (%s below %s's on %d requests); "
+              "min clearance %s %.3f m, %s %.3f m (%s below %s's on %d requests, by up to %.3f m); "
               "make_plan time %s/%s: median %.2f, total %.2f"
               % (len(turn_ratios), o_name, b_name, statistics.median(turn_ratios), max(turn_ratios), o_turn / b_turn,
-                 o_turn, b_turn, b_name, b_clear, o_name, o_clear, o_name, b_name, less_clear, o_name, b_name,
+                 o_turn, b_turn, b_name, b_clear, o_name, o_clear, o_name, b_name, less_clear, shortfall, o_name, b_name,
                  statistics.median(time_ratios), o_ms / b_ms))
 
 
