@@ -2,7 +2,8 @@
 // classic ACO evaporation study (`sweep`), and measures speed and memory on generated maps
 // of growing size (`scale`), how closely a planning-time limit is kept (`deadline`), and
 // cost-aware planning on inflated cost maps beside A* (`costs`).
-// Each command writes JSON, CSV and Markdown into --out.
+// Each of those writes JSON, CSV and Markdown into --out; `map` writes one generated map as a
+// map_server map (for move_base).
 
 #include <algorithm>
 #include <exception>
@@ -15,6 +16,7 @@
 
 #include "costs.hpp"
 #include "deadline.hpp"
+#include "map_command.hpp"
 #include "paper_tables.hpp"
 #include "scale.hpp"
 #include "sweeps.hpp"
@@ -86,6 +88,27 @@ void addCostsCommand(CLI::App& app, eaci_bench::CostsOptions& o, std::vector<std
   cmd->add_option("--out", o.out_dir, "output directory");
 }
 
+// --room-cells and --door-cells: "MIN,MAX" or one width for both.
+void setWidthRange(const std::vector<int>& widths, int& min, int& max) {
+  if (widths.empty()) return;
+  min = widths.front();
+  max = widths.back();
+}
+
+void addMapCommand(CLI::App& app, eaci_bench::MapCommandOptions& o, std::string& kind,
+                   std::vector<int>& room_cells, std::vector<int>& door_cells) {
+  CLI::App* cmd = app.add_subcommand("map", "one generated map written as a map_server map (trinary YAML + PGM)");
+  cmd->add_option("--kind", kind, "rooms or clutter");
+  cmd->add_option("--size", o.size, "cells per side")->check(CLI::Range(6, 4096));
+  cmd->add_option("--seed", o.seed, "map seed (the next seed is tried while start and goal are not connected)");
+  cmd->add_option("--room-cells", room_cells, "rooms: room widths MIN,MAX (cells; default 10,20)")
+      ->delimiter(',')->expected(1, 2)->check(CLI::Range(1, 4096));
+  cmd->add_option("--door-cells", door_cells, "rooms: door widths MIN,MAX (cells; default 2,3)")
+      ->delimiter(',')->expected(1, 2)->check(CLI::Range(1, 4096));
+  cmd->add_option("--resolution", o.resolution, "metres per cell")->check(CLI::PositiveNumber);
+  cmd->add_option("--out", o.out_yaml, "the map's YAML (the PGM is written beside it)")->required();
+}
+
 // Map kinds named on the command line, or the defaults when none were.
 std::vector<eaci_bench::MapKind> parseKinds(const std::vector<std::string>& texts,
                                             std::vector<eaci_bench::MapKind> defaults) {
@@ -109,12 +132,16 @@ int main(int argc, char** argv) {
   eaci_bench::ScaleOptions scale;
   eaci_bench::DeadlineOptions deadline;
   eaci_bench::CostsOptions costs;
+  eaci_bench::MapCommandOptions map;
   std::vector<std::string> kinds;
+  std::string map_kind = "rooms";
+  std::vector<int> room_cells, door_cells;
   addPaperCommand(app, paper);
   addSweepCommand(app, sweep);
   addScaleCommand(app, scale, kinds);
   addDeadlineCommand(app, deadline, kinds);
   addCostsCommand(app, costs, kinds);
+  addMapCommand(app, map, map_kind, room_cells, door_cells);
   CLI11_PARSE(app, argc, argv);
 
   const std::string command_line = joinArguments(argc, argv);
@@ -137,6 +164,12 @@ int main(int argc, char** argv) {
       costs.kinds = parseKinds(kinds, costs.kinds);
       costs.sizes.erase(std::remove(costs.sizes.begin(), costs.sizes.end(), 0), costs.sizes.end());
       return eaci_bench::runCostsCommand(costs);
+    }
+    if (app.got_subcommand("map")) {
+      if (!eaci_bench::parseMapKind(map_kind, map.kind)) throw std::invalid_argument("unknown map kind '" + map_kind + "'");
+      setWidthRange(room_cells, map.generator.room_min, map.generator.room_max);
+      setWidthRange(door_cells, map.generator.door_min, map.generator.door_max);
+      return eaci_bench::runMapCommand(map);
     }
     scale.command_line = command_line;
     scale.kinds = parseKinds(kinds, scale.kinds);

@@ -12,7 +12,6 @@ namespace eaci_bench {
 
 namespace {
 
-constexpr int kRoomMin = 10, kRoomMax = 20;  // room width between walls
 constexpr double kClutterMin = 0.20, kClutterMax = 0.30;  // obstacle fraction
 constexpr int kCornerKeepFree = 3;                        // free square at start and goal
 constexpr int kMaxAttempts = 100;
@@ -47,11 +46,11 @@ class Canvas {
   std::vector<std::uint8_t> cells_;
 };
 
-// Wall positions along one axis: rooms kRoomMin..kRoomMax wide, none closer than kRoomMin to the far edge.
-std::vector<int> wallLines(int size, Random& random) {
+// Wall positions along one axis: rooms room_min..room_max wide, none closer than room_min to the far edge.
+std::vector<int> wallLines(int size, Random& random, const GeneratorOptions& options) {
   std::vector<int> walls;
-  for (int pos = random.between(kRoomMin, kRoomMax); pos <= size - 1 - kRoomMin;
-       pos += 1 + random.between(kRoomMin, kRoomMax))
+  for (int pos = random.between(options.room_min, options.room_max); pos <= size - 1 - options.room_min;
+       pos += 1 + random.between(options.room_min, options.room_max))
     walls.push_back(pos);
   return walls;
 }
@@ -77,7 +76,7 @@ std::pair<int, int> doorIn(std::pair<int, int> span, Random& random, const Gener
 
 void drawRooms(Canvas& canvas, Random& random, const GeneratorOptions& options) {
   const int n = canvas.size();
-  const std::vector<int> rows = wallLines(n, random), cols = wallLines(n, random);
+  const std::vector<int> rows = wallLines(n, random, options), cols = wallLines(n, random, options);
   for (int r : rows)
     for (int c = 0; c < n; ++c) canvas.set(r, c, true);
   for (int c : cols)
@@ -140,8 +139,20 @@ bool parseMapKind(const std::string& text, MapKind& kind) {
   return true;
 }
 
+std::string generatorOptionsProblem(const GeneratorOptions& options) {
+  if (options.door_min < 1 || options.door_max < options.door_min)
+    return "door widths must be 1 <= min <= max cells (got " + std::to_string(options.door_min) + "-" +
+           std::to_string(options.door_max) + ")";
+  if (options.room_min < 1 || options.room_max < options.room_min)
+    return "room widths must be 1 <= min <= max cells (got " + std::to_string(options.room_min) + "-" +
+           std::to_string(options.room_max) + ")";
+  return "";
+}
+
 GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const GeneratorOptions& options) {
   if (size < 2 * kCornerKeepFree) throw std::runtime_error("map size must be at least 6");
+  const std::string problem = generatorOptionsProblem(options);
+  if (!problem.empty()) throw std::runtime_error(problem);
   for (int attempt = 0; attempt < kMaxAttempts; ++attempt) {
     GeneratedMap g;
     g.kind = kind;

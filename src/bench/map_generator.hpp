@@ -1,7 +1,7 @@
 // Seeded test maps for the scale benchmark, start at the top-left corner, goal at the
 // bottom-right, connected under the robot's move rule (no corner cutting):
 //   rooms   - a grid of rooms 10-20 cells wide, separated by 1-cell walls with a 2-3 cell
-//             door (GeneratorOptions) into every neighbouring room;
+//             door into every neighbouring room (both ranges: GeneratorOptions);
 //   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free.
 // A map whose start and goal are not connected (checked with A*) is drawn again with the
 // next seed.
@@ -33,11 +33,17 @@ struct GeneratedMap {
 };
 
 // What may differ from the scale benchmark's maps: wider doors for `costs`, whose inflation
-// closes doors narrower than 3 cells.
+// closes doors narrower than 3 cells, and building-like rooms and doors for `map` (e.g. rooms
+// of 2-4 m and doors of 0.8-1 m at 0.05 m a cell: 40-80 and 16-20 cells).
 struct GeneratorOptions {
   int door_min = 2;  // door widths, cells
   int door_max = 3;
+  int room_min = 10;  // room widths between walls, cells
+  int room_max = 20;
 };
+
+// Empty when the options can be drawn from, else what is wrong with them (one sentence).
+std::string generatorOptionsProblem(const GeneratorOptions& options);
 
 // size x size cells. Throws std::runtime_error when 100 seeds in a row give no connected map.
 GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const GeneratorOptions& options = {});
