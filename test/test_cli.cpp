@@ -659,6 +659,14 @@ TEST_F(CliTest, InflateKeepsRoutesOffWalls) {
   for (const auto& cell : inflated["path"]) farthest = std::max(farthest, cell[0].get<int>());
   EXPECT_GE(farthest, 3);
   EXPECT_GT(inflated["cost"].get<double>(), inflated["length"].get<double>());
+  // The report measures costs on the inflated cells the route was planned on, clearance from the
+  // map's own obstacles: with cost_factor 0 the route stays in row 1, every cell of it 92.
+  const json straight = runJson(common + " --inflate 3 --cost-scaling-factor 1 --set cost_factor=0", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& cell : straight["path"]) EXPECT_EQ(cell[0], 1);
+  EXPECT_DOUBLE_EQ(straight["mean_cell_cost"].get<double>(), 92.0);
+  EXPECT_DOUBLE_EQ(straight["min_clearance_m"].get<double>(), plain["min_clearance_m"].get<double>());
+  EXPECT_DOUBLE_EQ(plain["mean_cell_cost"].get<double>(), 0.0);
   // An inscribed radius of 1 m makes the cells beside the wall obstacles: the start is in one.
   const std::string reason = expectBadInput(common + " --inflate 3 --inscribed-radius 1");
   EXPECT_NE(reason.find("start"), std::string::npos) << reason;

@@ -255,6 +255,7 @@ Outputs writeOutputs(const Options& o, const eaci::PlanResult& r, const eaci::to
       if (r.algorithm == eaci::Algorithm::kEaci && on_free(context.start) && on_free(context.goal))
         drawing.auxiliary_blocked = auxiliaryBlocked(*context.map, params, *context.start, *context.goal);
       drawing.caption = imageCaption(r, context);
+      drawing.planned_on = context.planned_on;
       eaci::tools::writePng(o.png_file, eaci::tools::renderPlan(drawing));
     } catch (const std::exception& e) {
       out.png_error = e.what();
@@ -394,6 +395,7 @@ int run(int argc, char** argv) {
       inflated = eaci::inflatedCosts(planning_view, map->resolution, *inflation);
       planning_view = eaci::GridView(inflated.data(), map->width, map->height, eaci::RowOrder::kTopFirst,
                                      eaci::inflatedCostsInterpretation(params.allow_unknown));
+      context.planned_on = planning_view;
     }
     if (!o.tolerance.empty()) {
       double tolerance = 0;

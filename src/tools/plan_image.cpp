@@ -251,7 +251,8 @@ RgbImage renderPlan(const PlanDrawing& d) {
   const int k = cellPixels(map.width, map.height);
   const int map_w = map.width * k, map_h = map.height * k;
   const std::size_t cells = map.cells.size();
-  const GridView view = map.view(d.unknown, d.lethal_cost);
+  const GridView map_view = map.view(d.unknown, d.lethal_cost);
+  const GridView view = d.planned_on ? *d.planned_on : map_view;
 
   // ---- pheromone heat: log scale over the cells that carry more than the floor
   std::vector<double> heat;  // per cell, 0 = none, else (0, 1]
@@ -369,8 +370,9 @@ RgbImage renderPlan(const PlanDrawing& d) {
       const Cell cell{r, c};
       const std::size_t i = static_cast<std::size_t>(r) * static_cast<std::size_t>(map.width) + static_cast<std::size_t>(c);
       const bool unknown = map.cells[i] == kUnknownValue;
-      const bool obstacle = view.isObstacle(cell);
-      const std::uint8_t grey = obstacle ? 0 : costGrey(view.cost(cell));
+      const bool obstacle = map_view.isObstacle(cell);
+      const bool planned_obstacle = !obstacle && view.isObstacle(cell);  // e.g. the inscribed band of --inflate
+      const std::uint8_t grey = obstacle ? 0 : planned_obstacle ? costGrey(254) : costGrey(view.cost(cell));
       Rgb colour = obstacle ? (unknown ? kUnknownColour : kObstacleColour)
                             : (unknown ? kUnknownFreeColour : Rgb{grey, grey, grey});
       if (!obstacle) {

@@ -33,6 +33,10 @@ struct PlanDrawing {
   // obstacle. Empty: none drawn.
   std::vector<std::uint8_t> auxiliary_blocked;
   std::string caption;                               // one line under the map (ASCII)
+  // The cells the planners read when they are not the map's own (--inflate: the map's costmap_2d
+  // costs): their costs are drawn, and cells that are obstacles there but free on the map
+  // (the inscribed band) in the darkest cost grey. Empty: the map.
+  std::optional<GridView> planned_on;
 };
 
 // Pixels per cell edge: clamp(1000 / max(W, H), 1, 24).

@@ -49,16 +49,20 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // The route's cost (the cost model of the parameters); the length on a map without costs.
   j["cost"] = has_length && std::isfinite(r.cost) ? json(r.cost) : json(nullptr);
   j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
-  // Clearance (route cell centre to nearest obstacle cell centre, metres; null without obstacles)
-  // and mean cell cost 0..254 of the route, on the grid it was planned on.
+  // Clearance (route cell centre to nearest obstacle cell centre of the map, metres; null without
+  // obstacles) and mean cell cost 0..254 of the route, on the grid it was planned on.
   j["min_clearance_m"] = nullptr;
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
     const UnknownPolicy unknown = context.unknown_policy == "free" ? UnknownPolicy::kFree : UnknownPolicy::kObstacle;
     const auto lethal = static_cast<std::uint8_t>(context.parameters.lethal_cost);  // maps of costs (mode: raw)
-    const CostGrid grid = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);
-    j["min_clearance_m"] = finiteOrNull(minClearance(grid, r.path) * map->resolution);
-    j["mean_cell_cost"] = finiteOrNull(meanCellCost(grid, r.path));
+    // Clearance from the map's own obstacles; costs as planned (--inflate: the inflated costs).
+    const CostGrid on_map = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);
+    j["min_clearance_m"] = finiteOrNull(minClearance(on_map, r.path) * map->resolution);
+    const CostGrid planned = context.planned_on
+                                 ? CostGrid::fromView(*context.planned_on, context.parameters.allow_corner_cutting)
+                                 : on_map;
+    j["mean_cell_cost"] = finiteOrNull(meanCellCost(planned, r.path));
   }
 
   json path = json::array(), path_xy = json::array();

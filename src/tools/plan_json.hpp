@@ -24,6 +24,9 @@ struct PlanContext {
   std::optional<Cell> requested_goal;   // the goal asked for, when --tolerance moved it to `goal`
   Parameters parameters;                // as used (or as far as they were read)
   std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
+  // The cells the planners read when they are not the map's own (--inflate: the map's costmap_2d
+  // costs); min_clearance_m and mean_cell_cost are measured on them. Empty: the map.
+  std::optional<GridView> planned_on;
 };
 
 // The report: success, error (only when failed), status, algorithm, length, cost, length_m,
