@@ -1,4 +1,4 @@
-// eaci_bench map: a generated map written by saveTrinaryMap (eaci/io/trinary_map_writer.hpp)
+// eaci_bench map: a generated map written by saveTrinaryMap (eaci/io/map_server_writer.hpp)
 // reads back through loadMap with the same cells, resolution and origin; the generator's room
 // and door widths (src/bench/map_generator.hpp) are kept.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include "../src/bench/map_command.hpp"
 #include "eaci/io/map_io.hpp"
-#include "eaci/io/trinary_map_writer.hpp"
+#include "eaci/io/map_server_writer.hpp"
 
 namespace {
 

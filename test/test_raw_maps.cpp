@@ -1,4 +1,4 @@
-// Maps of costs: saveRawMap (eaci/io/raw_map_writer.hpp) read back by loadMapServerYaml in raw
+// Maps of costs: saveRawMap (eaci/io/map_server_writer.hpp) read back by loadMapServerYaml in raw
 // mode, and planning on a raw map with its costs.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "eaci/io/map_io.hpp"
-#include "eaci/io/raw_map_writer.hpp"
+#include "eaci/io/map_server_writer.hpp"
 #include "eaci/planner.hpp"
 
 namespace eaci {

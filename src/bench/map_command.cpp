@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <iostream>
 
-#include "eaci/io/trinary_map_writer.hpp"
+#include "eaci/io/map_server_writer.hpp"
 
 namespace eaci_bench {
 

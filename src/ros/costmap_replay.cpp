@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "eaci/io/parameter_file.hpp"
-#include "eaci/io/raw_map_writer.hpp"
+#include "eaci/io/map_server_writer.hpp"
 #include "eaci/io/text.hpp"
 
 namespace eaci_ros {
