@@ -107,6 +107,13 @@ write("matrix", "comments.txt", "# a map\n\n0\t1 # row 1\n1, 0\n# end\n")
 write("matrix", "bom.txt", "\ufeff01\n10")
 write("matrix", "ragged.txt", "0 1\n0 1 1\n")
 
+# ---------------------------------------------------------------- fuzz_movingai_map
+write("movingai_map", "small.map", "type octile\nheight 3\nwidth 4\nmap\n..@.\n.TG.\nWS.O\n")
+write("movingai_map", "crlf.map", "type octile\r\nheight 2\r\nwidth 2\r\nmap\r\n.@\r\n@.\r\n")
+write("movingai_map", "order.map", "width 3\nheight 1\ntype octile\nmap\n.G.")
+write("movingai_map", "short.map", "type octile\nheight 3\nwidth 2\nmap\n..\n..\n")
+write("movingai_map", "wide.map", "type octile\nheight 1\nwidth 2\nmap\n...\n")
+
 # ---------------------------------------------------------------- fuzz_map_yaml (YAML [NUL image])
 MAP_YAML = ("image: map.pgm\nresolution: 0.05\norigin: [-10.0, -10.0, 0.0]\nnegate: 0\n"
             "occupied_thresh: 0.65\nfree_thresh: 0.196\n")

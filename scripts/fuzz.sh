@@ -16,7 +16,7 @@ root=$(pwd)
 
 seconds=${1:-30}
 case "$seconds" in ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET]" >&2; exit 2 ;; esac
-all_targets=(pgm image matrix map_yaml parameters params_yaml cli_args)
+all_targets=(pgm image matrix movingai_map map_yaml parameters params_yaml cli_args)
 read -r -a targets <<< "${EACI_FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=${EACI_FUZZ_JOBS:-$(nproc)}
 build=${EACI_FUZZ_BUILD:-build/fuzzer}

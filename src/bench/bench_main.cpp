@@ -1,7 +1,8 @@
 // eaci_bench: reproduces the paper's Tables 1-3 (`paper`), its parameter studies and the
 // classic ACO evaporation study (`sweep`), and measures speed and memory on generated maps
 // of growing size (`scale`), how closely a planning-time limit is kept (`deadline`), and
-// cost-aware planning on inflated cost maps beside A* (`costs`).
+// cost-aware planning on inflated cost maps beside A* (`costs`), and runs MovingAI benchmark
+// scenarios against their optimal lengths (`scen`).
 // Each of those writes JSON, CSV and Markdown into --out; `map` writes one generated map as a
 // map_server map (for move_base).
 
@@ -19,6 +20,7 @@
 #include "map_command.hpp"
 #include "paper_tables.hpp"
 #include "scale.hpp"
+#include "scen.hpp"
 #include "sweeps.hpp"
 
 namespace {
@@ -88,6 +90,17 @@ void addCostsCommand(CLI::App& app, eaci_bench::CostsOptions& o, std::vector<std
   cmd->add_option("--out", o.out_dir, "output directory");
 }
 
+void addScenCommand(CLI::App& app, eaci_bench::ScenOptions& o) {
+  CLI::App* cmd = app.add_subcommand("scen", "a MovingAI benchmark scenario (.scen + .map): A* and EACI per problem "
+                                             "against the file's optimal lengths (corner cutting forbidden)");
+  cmd->add_option("scen", o.scen_path, "the .scen file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--every", o.every, "run problems 1, 1+K, 1+2K, ... of the file")->check(CLI::Range(1, 1000000000));
+  cmd->add_option("--map-dir", o.map_dir, "directory of the .map files (default: the .scen file's)");
+  cmd->add_option("--seeds", o.seeds, "EACI runs per problem, seeds 1..N")->check(CLI::Range(1, 1000));
+  cmd->add_option("--budget-s", o.budget_s, "wall-time cap of one EACI run (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--out", o.out_dir, "output directory");
+}
+
 // --room-cells and --door-cells: "MIN,MAX" or one width for both.
 void setWidthRange(const std::vector<int>& widths, int& min, int& max) {
   if (widths.empty()) return;
@@ -142,6 +155,8 @@ int main(int argc, char** argv) {
   addDeadlineCommand(app, deadline, kinds);
   addCostsCommand(app, costs, kinds);
   addMapCommand(app, map, map_kind, room_cells, door_cells);
+  eaci_bench::ScenOptions scen;
+  addScenCommand(app, scen);
   CLI11_PARSE(app, argc, argv);
 
   const std::string command_line = joinArguments(argc, argv);
@@ -164,6 +179,10 @@ int main(int argc, char** argv) {
       costs.kinds = parseKinds(kinds, costs.kinds);
       costs.sizes.erase(std::remove(costs.sizes.begin(), costs.sizes.end(), 0), costs.sizes.end());
       return eaci_bench::runCostsCommand(costs);
+    }
+    if (app.got_subcommand("scen")) {
+      scen.command_line = command_line;
+      return eaci_bench::runScenCommand(scen);
     }
     if (app.got_subcommand("map")) {
       if (!eaci_bench::parseMapKind(map_kind, map.kind)) throw std::invalid_argument("unknown map kind '" + map_kind + "'");

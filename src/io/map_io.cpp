@@ -17,10 +17,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <system_error>
 #include <utility>
 
+#include "eaci/io/movingai_map.hpp"
 #include "eaci/io/text.hpp"
 
 namespace eaci {
@@ -86,11 +88,14 @@ std::string readFileBytes(const std::string& path, std::size_t max_bytes) {
   return bytes;
 }
 
-bool hasYamlExtension(const std::string& path) {
+// The file name ends in one of `extensions` (lower case, with the dot), in any case.
+bool hasExtension(const std::string& path, std::initializer_list<const char*> extensions) {
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".yaml" || extension == ".yml";
+  for (const char* e : extensions)
+    if (extension == e) return true;
+  return false;
 }
 
 // ------------------------------------------------------------------ image sizes
@@ -761,8 +766,14 @@ OccupancyMap loadMatrixText(const std::string& path) {
   return parseMatrixText(readFileBytes(path, kMaxMapFileBytes), path);
 }
 
+OccupancyMap loadMovingAiMap(const std::string& path) {
+  return parseMovingAiMap(readFileBytes(path, kMaxMapFileBytes), path);
+}
+
 OccupancyMap loadMap(const std::string& path) {
-  return hasYamlExtension(path) ? loadMapServerYaml(path) : loadMatrixText(path);
+  if (hasExtension(path, {".yaml", ".yml"})) return loadMapServerYaml(path);
+  if (hasExtension(path, {".map"})) return loadMovingAiMap(path);
+  return loadMatrixText(path);
 }
 
 }  // namespace eaci

@@ -305,7 +305,7 @@ int run(int argc, char** argv) {
                "Exit status: 0 path found, 3 no path, 2 bad input.",
                "eaci_plan"};
   app.option_defaults()->always_capture_default();
-  app.add_option("--map", o.map_path, "map: .yaml (map_server) or .txt (0/1 matrix, first line = top row)")
+  app.add_option("--map", o.map_path, "map: .yaml (map_server), .map (MovingAI benchmark map) or .txt (0/1 matrix, first line = top row)")
       ->required();
   auto* start_rc = app.add_option("--start", o.start_rc, "start cell ROW,COL (0-based, row 0 = top)");
   auto* start_cell = app.add_option("--start-cell", o.start_cell, "start cell by the paper's serial number 1..W*H");

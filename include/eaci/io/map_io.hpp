@@ -1,4 +1,5 @@
-// Reading maps: map_server YAML + image (PGM P5/P2, PNG), and plain 0/1 matrices.
+// Reading maps: map_server YAML + image (PGM P5/P2, PNG), plain 0/1 matrices, and MovingAI
+// benchmark maps (.map, movingai_map.hpp).
 //
 // Every reader either returns a well-formed OccupancyMap (width, height >= 1,
 // cells.size() == width * height, resolution > 0 and finite) or throws
@@ -28,7 +29,8 @@ constexpr std::size_t kMaxMapCells = std::size_t{1} << 26;  // 67,108,864 cells,
 // are refused, and reading stops there, so a huge or endless input cannot exhaust memory.
 constexpr std::size_t kMaxMapFileBytes = std::size_t{4} * kMaxMapCells;  // 256 MiB
 
-// Dispatches on the extension: .yaml / .yml -> map_server map, anything else -> 0/1 matrix.
+// Dispatches on the extension (any case): .yaml / .yml -> map_server map, .map -> MovingAI
+// benchmark map (movingai_map.hpp), anything else -> 0/1 matrix.
 OccupancyMap loadMap(const std::string& path);
 
 // map_server map: image, resolution, origin, negate, occupied_thresh, free_thresh, mode.

@@ -1,0 +1,206 @@
+// Runs the built eaci_bench binary's `scen` command (and eaci_plan) on the hand-made MovingAI
+// map test/data/movingai/wall.map and its scenario wall.scen, and checks the lengths against
+// optima worked out by hand.
+//
+// wall.map (x = column 0..7, y = row 0..5; '@' and 'T' blocked, '.' and 'G' passable):
+//
+//     y0  ........
+//     y1  ........
+//     y2  @@@.@@@@     a wall with a one-cell gap at x 3
+//     y3  ........
+//     y4  ..TT....     two trees at (2,4) and (3,4)
+//     y5  G.......
+//
+// Without corner cutting the gap (3,2) is entered from (3,1) and left to (3,3) straight: the
+// diagonals into it would pass the wall cells (2,2) / (4,2) corner to corner.
+//   1. (0,0) -> (7,0): along row 0                                       = 7
+//   2. (6,1) -> (1,3): (6,1)-(3,1) 3, gap 2, (3,3)-(1,3) 2                = 7
+//   3. (1,5) -> (4,3): every 2-diagonal route passes a tree corner to corner; around it by
+//      (1,4),(1,3) then along row 3, or by (4,5),(4,4): 1+1+3 = 2+1+1+1  = 5
+//      (with corner cutting (1,4)->(2,3) is allowed: 1 + √2 + 2 = 3 + √2 = 4.41421356)
+//   4. (0,0) -> (0,5): (0,0)-(3,1) octile 2+√2, gap 2; (3,3)-(0,5): (2,4) is a tree, so
+//      (2,3),(1,3) then (0,4) diagonal and (0,5): 3+√2.  Total 7 + 2√2     = 9.82842712
+//   5. (0,3) -> (7,5): along row 3 to (5,3), diagonals (6,4),(7,5): the octile distance
+//      5 + 2√2, no obstacle in the way                                   = 7.82842712
+//   6. (7,0) -> (7,5): (7,0)-(3,1) octile 3+√2, gap 2, (3,3)-(7,5) octile 2+2√2 by
+//      (4,3),(5,3),(6,4),(7,5).  Total 7 + 3√2                            = 11.24264069
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kBench = EACI_BINARY_DIR "/bin/eaci_bench";
+const std::string kPlan = EACI_BINARY_DIR "/bin/eaci_plan";
+const std::string kData = EACI_SOURCE_DIR "/test/data/movingai";
+
+const double kRoot2 = std::sqrt(2.0);
+// The hand-computed optima of wall.scen's six problems, in file order (see above).
+const std::vector<double> kOptima = {7.0, 7.0, 5.0, 7.0 + 2 * kRoot2, 5.0 + 2 * kRoot2, 7.0 + 3 * kRoot2};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char ch : s) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+class ScenTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("eaci_scen_" + std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    if (!fs::exists(kBench)) GTEST_SKIP() << "eaci_bench not built: " << kBench;
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  // Runs `binary args`, returns the exit status; stdout and stderr in out_ / err_.
+  int run(const std::string& binary, const std::string& args) {
+    const std::string command = quote(binary) + " " + args + " >" + quote((dir_ / "out.txt").string()) + " 2>" +
+                                quote((dir_ / "err.txt").string());
+    const int status = std::system(command.c_str());
+    out_ = readFile(dir_ / "out.txt");
+    err_ = readFile(dir_ / "err.txt");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  json runScen(const std::string& scen, const std::string& extra, int expected_status = 0) {
+    const int status = run(kBench, "scen " + quote(scen) + " --out " + quote((dir_ / "report").string()) + " " + extra);
+    EXPECT_EQ(status, expected_status) << err_;
+    const fs::path report = dir_ / "report" / "scen.json";
+    if (!fs::exists(report)) {
+      ADD_FAILURE() << "no report: " << err_;
+      return json::object();
+    }
+    EXPECT_TRUE(fs::exists(dir_ / "report" / "scen.csv"));
+    EXPECT_TRUE(fs::exists(dir_ / "report" / "scen.md"));
+    return json::parse(readFile(report));
+  }
+
+  fs::path dir_;
+  std::string out_, err_;
+};
+
+TEST_F(ScenTest, AStarMatchesTheHandComputedOptimaOfEveryProblem) {
+  const json j = runScen(kData + "/wall.scen", "--seeds 2");
+  const json& problems = j["problems"];
+  ASSERT_EQ(problems.size(), kOptima.size());
+  for (std::size_t k = 0; k < kOptima.size(); ++k) {
+    SCOPED_TRACE("problem " + std::to_string(k + 1));
+    EXPECT_EQ(problems[k]["index"], k);
+    EXPECT_NEAR(problems[k]["optimal_length"].get<double>(), kOptima[k], 1e-8);  // the file's value
+    EXPECT_NEAR(problems[k]["astar_length"].get<double>(), kOptima[k], 1e-9);    // A* under our rule
+    EXPECT_FALSE(problems[k]["mismatch"].get<bool>());
+    EXPECT_EQ(problems[k]["eaci_successes"], 2);
+    EXPECT_EQ(problems[k]["eaci_runs"].size(), 2u);
+    EXPECT_GE(problems[k]["eaci_length"].get<double>(), kOptima[k] - 1e-9);  // never shorter than the optimum
+    EXPECT_GE(problems[k]["eaci_gap_pct"].get<double>(), -1e-6);
+  }
+  EXPECT_EQ(problems[2]["start_xy"], json::array({1, 5}));
+  EXPECT_EQ(problems[2]["goal_xy"], json::array({4, 3}));
+  EXPECT_EQ(problems[5]["bucket"], 3);
+  const json& s = j["summary"];
+  EXPECT_EQ(s["problems_in_file"], 6);
+  EXPECT_EQ(s["problems_run"], 6);
+  EXPECT_EQ(s["mismatches"], 0);
+  EXPECT_EQ(s["astar_failures"], 0);
+  EXPECT_EQ(s["eaci_runs"], 12);
+  EXPECT_EQ(s["eaci_failures"], 0);
+  EXPECT_GE(s["worst_gap_pct"].get<double>(), s["median_gap_pct"].get<double>());
+  EXPECT_GT(s["median_time_ratio"].get<double>(), 0.0);
+  const std::string csv = readFile(dir_ / "report" / "scen.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);  // header + 6 problems
+  EXPECT_NE(out_.find("6 of 6 problems, 0 A* mismatches"), std::string::npos) << out_;
+}
+
+TEST_F(ScenTest, EveryKthProblemAndMapDir) {
+  // The scenario copied elsewhere: its map is found through --map-dir.
+  fs::copy_file(kData + "/wall.scen", dir_ / "copy.scen");
+  const json j = runScen((dir_ / "copy.scen").string(), "--every 2 --map-dir " + quote(kData));
+  const json& problems = j["problems"];
+  ASSERT_EQ(problems.size(), 3u);  // problems 1, 3, 5
+  for (std::size_t n = 0; n < 3; ++n) {
+    EXPECT_EQ(problems[n]["index"], 2 * n);
+    EXPECT_NEAR(problems[n]["astar_length"].get<double>(), kOptima[2 * n], 1e-9);
+  }
+  EXPECT_EQ(j["summary"]["problems_in_file"], 6);
+  EXPECT_EQ(j["summary"]["problems_run"], 3);
+  EXPECT_EQ(j["summary"]["eaci_runs"], 3);
+}
+
+TEST_F(ScenTest, AnOptimumWithCornerCuttingIsAMismatch) {
+  // Problem 3's length if corners could be cut (3 + √2): A* (no corner cutting) finds 5.
+  fs::copy_file(kData + "/wall.map", dir_ / "wall.map");
+  std::ofstream(dir_ / "cut.scen") << "version 1\n0\twall.map\t8\t6\t0\t0\t7\t0\t7\n1\twall.map\t8\t6\t1\t5\t4\t3\t4.41421356\n";
+  const json j = runScen((dir_ / "cut.scen").string(), "", 1);
+  ASSERT_EQ(j["problems"].size(), 2u);
+  EXPECT_FALSE(j["problems"][0]["mismatch"].get<bool>());
+  EXPECT_TRUE(j["problems"][1]["mismatch"].get<bool>());
+  EXPECT_NEAR(j["problems"][1]["astar_diff"].get<double>(), 5.0 - 4.41421356, 1e-9);
+  EXPECT_EQ(j["summary"]["mismatches"], 1);
+  EXPECT_NE(err_.find("mismatch on problem 2 (line 3)"), std::string::npos) << err_;
+}
+
+TEST_F(ScenTest, ProblemsThatDoNotFitTheMapAreRefused) {
+  fs::copy_file(kData + "/wall.map", dir_ / "wall.map");
+  std::ofstream(dir_ / "size.scen") << "version 1\n0\twall.map\t9\t6\t0\t0\t7\t0\t7\n";
+  EXPECT_EQ(run(kBench, "scen " + quote((dir_ / "size.scen").string()) + " --out " + quote(dir_.string())), 2);
+  EXPECT_NE(err_.find("size.scen: line 2: map size 9 x 6 but"), std::string::npos) << err_;
+  std::ofstream(dir_ / "blocked.scen") << "version 1\n0\twall.map\t8\t6\t0\t2\t7\t0\t7\n";  // (0,2) is '@'
+  EXPECT_EQ(run(kBench, "scen " + quote((dir_ / "blocked.scen").string()) + " --out " + quote(dir_.string())), 2);
+  EXPECT_NE(err_.find("blocked.scen: line 2: start (x 0, y 2) is blocked"), std::string::npos) << err_;
+  std::ofstream(dir_ / "nomap.scen") << "version 1\n0\tmissing.map\t8\t6\t0\t0\t7\t0\t7\n";
+  EXPECT_EQ(run(kBench, "scen " + quote((dir_ / "nomap.scen").string()) + " --out " + quote(dir_.string())), 2);
+  EXPECT_NE(err_.find("missing.map"), std::string::npos) << err_;
+}
+
+TEST_F(ScenTest, EaciPlanReadsTheMovingAiMap) {
+  if (!fs::exists(kPlan)) GTEST_SKIP() << "eaci_plan not built";
+  const std::string map = quote(kData + "/wall.map");
+  const fs::path report = dir_ / "plan.json";
+  // Problem 4, (x 0, y 0) -> (x 0, y 5): --start and --goal are ROW,COL.
+  ASSERT_EQ(run(kPlan, "--map " + map + " --start 0,0 --goal 5,0 --algorithm astar --json " + quote(report.string())), 0) << err_;
+  json j = json::parse(readFile(report));
+  EXPECT_NEAR(j["length"].get<double>(), 7.0 + 2 * kRoot2, 1e-9);
+  // Problem 3 without and with corner cutting.
+  ASSERT_EQ(run(kPlan, "--map " + map + " --start 5,1 --goal 3,4 --algorithm astar --json " + quote(report.string())), 0) << err_;
+  EXPECT_NEAR(json::parse(readFile(report))["length"].get<double>(), 5.0, 1e-9);
+  ASSERT_EQ(run(kPlan, "--map " + map + " --start 5,1 --goal 3,4 --algorithm astar --set allow_corner_cutting=true --json " +
+                           quote(report.string())), 0) << err_;
+  EXPECT_NEAR(json::parse(readFile(report))["length"].get<double>(), 3.0 + kRoot2, 1e-9);
+  // EACI with its defaults: a route no shorter than the optimum, through the gap.
+  ASSERT_EQ(run(kPlan, "--map " + map + " --start 0,0 --goal 5,0 --json " + quote(report.string())), 0) << err_;
+  j = json::parse(readFile(report));
+  EXPECT_GE(j["length"].get<double>(), 7.0 + 2 * kRoot2 - 1e-9);
+  bool through_gap = false;
+  for (const json& cell : j["path"]) through_gap |= cell == json::array({2, 3});
+  EXPECT_TRUE(through_gap);
+  // A blocked start cell ('@' at row 2, column 0) is bad input.
+  EXPECT_EQ(run(kPlan, "--map " + map + " --start 2,0 --goal 5,0"), 2);
+}
+
+}  // namespace
