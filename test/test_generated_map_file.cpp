@@ -10,27 +10,16 @@
 
 #include "../src/bench/map_command.hpp"
 #include "eaci/io/map_io.hpp"
+#include "test_support.hpp"
 #include "eaci/io/map_server_writer.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-class GeneratedMapFile : public ::testing::Test {
+class GeneratedMapFile : public eaci::test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(EACI_BINARY_DIR) / "test_generated_map_file_tmp" /
-           (std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
+  GeneratedMapFile() : ScratchDirTest("test_generated_map_file_tmp") {}
 };
 
 void expectSameMap(const eaci::OccupancyMap& written, const eaci::OccupancyMap& read) {

@@ -113,19 +113,9 @@ std::string greyPng(int width, int height, const std::vector<std::uint8_t>& pixe
 }
 
 // A fresh directory per test under the build directory, removed afterwards.
-class MapIoFiles : public ::testing::Test {
+class MapIoFiles : public eaci::test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(EACI_BINARY_DIR) / "test_map_io_tmp" /
-           (std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
+  MapIoFiles() : ScratchDirTest("test_map_io_tmp") {}
 
   std::string write(const std::string& name, const std::string& bytes) const {
     const fs::path path = dir_ / name;
@@ -134,7 +124,6 @@ class MapIoFiles : public ::testing::Test {
     return path.string();
   }
 
-  fs::path dir_;
 };
 
 // A 3 x 2 image and its trinary cells under the default thresholds:

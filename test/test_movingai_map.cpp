@@ -10,6 +10,7 @@
 
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/movingai_map.hpp"
+#include "test_support.hpp"
 
 namespace eaci {
 namespace {
@@ -32,10 +33,7 @@ std::string parseError(const std::string& text, const std::string& source = "m.m
 }
 
 ::testing::AssertionResult has(const std::string& message, std::initializer_list<std::string> parts) {
-  if (message.find('\n') != std::string::npos) return ::testing::AssertionFailure() << "not one line: " << message;
-  for (const std::string& part : parts)
-    if (message.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' missing from: " << message;
-  return ::testing::AssertionSuccess();
+  return eaci::test::isOneLineWith(message, parts);
 }
 
 TEST(MovingAiMap, ParsesHeaderAndRowsTopFirst) {

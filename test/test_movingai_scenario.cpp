@@ -5,6 +5,7 @@
 #include <string>
 
 #include "eaci/io/movingai_scenario.hpp"
+#include "test_support.hpp"
 
 namespace eaci {
 namespace {
@@ -20,10 +21,7 @@ std::string parseError(const std::string& text) {
 }
 
 ::testing::AssertionResult has(const std::string& message, std::initializer_list<std::string> parts) {
-  if (message.find('\n') != std::string::npos) return ::testing::AssertionFailure() << "not one line: " << message;
-  for (const std::string& part : parts)
-    if (message.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' missing from: " << message;
-  return ::testing::AssertionSuccess();
+  return eaci::test::isOneLineWith(message, parts);
 }
 
 TEST(MovingAiScenario, ParsesFieldsXIsColumnYIsRow) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "eaci/io/map_io.hpp"
+#include "test_support.hpp"
 #include "eaci/io/map_server_writer.hpp"
 #include "eaci/planner.hpp"
 
@@ -21,20 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RawMaps : public ::testing::Test {
+class RawMaps : public eaci::test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(EACI_BINARY_DIR) / "test_raw_maps_tmp" /
-           (std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  RawMaps() : ScratchDirTest("test_raw_maps_tmp") {}
   static std::string read(const std::string& file) {
     std::ifstream in(file, std::ios::binary);
     std::ostringstream s;
@@ -46,7 +36,6 @@ class RawMaps : public ::testing::Test {
     return path(name);
   }
 
-  fs::path dir_;
 };
 
 // A costmap-like buffer: bottom row first, as costmap_2d stores it.

@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <utility>
@@ -80,6 +84,39 @@ inline double countedLength(const CellPath& path) {
     (diag ? diagonal : straight)++;
   }
   return straight + diagonal * std::sqrt(2.0);
+}
+
+// A fresh directory per test under the build directory (`<EACI_BINARY_DIR>/<prefix>/<test>_<pid>`),
+// removed afterwards. Only where the build defines EACI_BINARY_DIR (the eaci_tests binary).
+#ifdef EACI_BINARY_DIR
+class ScratchDirTest : public ::testing::Test {
+ protected:
+  explicit ScratchDirTest(std::string prefix) : prefix_(std::move(prefix)) {}
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::path(EACI_BINARY_DIR) / prefix_ /
+           (std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string prefix_;
+  std::filesystem::path dir_;
+};
+#endif
+
+// Success when `message` is one line containing every one of `parts`.
+inline ::testing::AssertionResult isOneLineWith(const std::string& message, std::initializer_list<std::string> parts) {
+  if (message.find('\n') != std::string::npos) return ::testing::AssertionFailure() << "not one line: " << message;
+  for (const std::string& part : parts)
+    if (message.find(part) == std::string::npos)
+      return ::testing::AssertionFailure() << "'" << part << "' missing from: " << message;
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace eaci::test
