@@ -16,7 +16,7 @@ PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
 namespace eaci_ros {
 namespace {
 
-// A copy of the costmap's char map; the caller holds the costmap's mutex.
+// A copy of the costmap's char map and frame; the caller holds the costmap's mutex.
 CostmapSnapshot snapshotOf(costmap_2d::Costmap2D& costmap, const MapFrame& frame) {
   CostmapSnapshot snapshot;
   snapshot.frame = frame;
@@ -101,22 +101,24 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   const RosPlannerOptions& options = config_->options();
   if (tolerance < 0) tolerance = options.default_tolerance;
   const PlanCancellation::Scope in_progress(cancellation_);
-  costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
-  GridPlan result;
-  MapFrame map_frame;
-  std::optional<CostmapSnapshot> failed_on;  // with save_costmap_on_failure
+  // Copy the costmap (one memcpy of its char map) and let go of its mutex before planning, so
+  // the costmap's update loop is not held up by the search. move_base's own planning thread
+  // holds that mutex around the whole makePlan anyway (MoveBase::makePlan); the copy frees it
+  // for the ~make_plan services and for a costmap that changes size during a plan.
+  CostmapSnapshot snapshot;
   {
+    costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
     std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
-    map_frame = costmapFrame(*costmap, frame);
-    // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
-    eaci::CellInterpretation costs =
-        eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
-    costs.unknown_value = costmap_2d::NO_INFORMATION;
-    const eaci::GridView view(costmap->getCharMap(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
-                              costs);
-    result = planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag());
-    if (!result.ok && save_costmap_on_failure_) failed_on = snapshotOf(*costmap, map_frame);
+    snapshot = snapshotOf(*costmap, costmapFrame(*costmap, frame));
   }
+  const MapFrame& map_frame = snapshot.frame;
+  // The costmap's own costs (the inflation gradient) weigh every move (the cost model).
+  eaci::CellInterpretation costs =
+      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
+  costs.unknown_value = costmap_2d::NO_INFORMATION;
+  const eaci::GridView view(snapshot.cells.data(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
+                            costs);
+  const GridPlan result = planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag());
   PlanRecord record;
   record.start = {start.pose.position.x, start.pose.position.y};
   record.goal = {goal.pose.position.x, goal.pose.position.y};
@@ -129,7 +131,7 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   if (!result.ok) {
     ROS_WARN("EaciGlobalPlanner %s: %s", name_.c_str(), result.error.c_str());
     ReplayFiles files;
-    if (failed_on) saveForReplay("eaci_failed_plan", *failed_on, record, "the costmap of a failed plan", params, options, files);
+    if (save_costmap_on_failure_) saveForReplay("eaci_failed_plan", snapshot, record, "the costmap of a failed plan", params, options, files);
     return false;
   }
   if (result.stopped_by != StopReason::kNone)
