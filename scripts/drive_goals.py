@@ -11,10 +11,20 @@ occupied cell.
 Footprint clearance is the distance from the car's rectangle (config/costmap_common_params.yaml,
 without padding) to the centre of an occupied cell, less half a cell: contact means <= 0.
 
+Every global plan published during a drive is checked too: its smallest centre clearance from the
+occupied cells, and it counts as invalid when that is below --plan-clearance (the car's inscribed
+radius with the footprint padding: inside it the costmap marks the cell lethal).
+
+For a long replanning run (move_base with planner_frequency > 0), --duration keeps cycling through
+the goals until that many seconds have passed, and --memory-of samples a node's resident memory.
+
 Start move_base first (launch/move_base_demo.launch; see docs/ros.md), then:
     /usr/bin/python3 scripts/drive_goals.py [--rounds 3] [--map maps/lab.yaml] [--json out.json]
+    /usr/bin/python3 scripts/drive_goals.py --duration 600 --memory-of move_base --json soak.json
 """
 import argparse
+import glob
+import itertools
 import json
 import math
 import os
@@ -78,8 +88,9 @@ class OccupiedCells:
 
 
 class Drive:
-    def __init__(self, cells):
+    def __init__(self, cells, plan_clearance):
         self.cells = cells
+        self.plan_clearance = plan_clearance
         self.pose = None
         self.reset()
         rospy.Subscriber("/diff_drive_sim/ground_truth", Odometry, self.on_truth, queue_size=50)
@@ -91,6 +102,8 @@ class Drive:
         self.min_centre = self.min_footprint = float("inf")
         self.contacts = 0
         self.plans = 0
+        self.invalid_plans = 0
+        self.min_plan_clearance = float("inf")
 
     def on_truth(self, msg):
         p, q = msg.pose.pose.position, msg.pose.pose.orientation
@@ -106,6 +119,10 @@ class Drive:
     def on_plan(self, msg):
         if msg.poses:
             self.plans += 1
+            clearance = min(self.cells.clearances(p.pose.position.x, p.pose.position.y, 0.0)[0] for p in msg.poses)
+            self.min_plan_clearance = min(self.min_plan_clearance, clearance)
+            if clearance < self.plan_clearance:
+                self.invalid_plans += 1
             self.plan_log.append((msg.header.stamp.to_sec(), [(p.pose.position.x, p.pose.position.y) for p in msg.poses]))
 
     def watch_plans(self):
@@ -114,6 +131,20 @@ class Drive:
             if kind == "nav_msgs/Path" and topic.endswith("/plan") and topic not in self.plan_topics:
                 rospy.Subscriber(topic, Path, self.on_plan, queue_size=10)
                 self.plan_topics.append(topic)
+
+
+def resident_kib(node_name):
+    """VmRSS (KiB) of the process started as ROS node `node_name` (its __name:= argument), or None."""
+    for cmdline in glob.glob("/proc/[0-9]*/cmdline"):
+        try:
+            args = open(cmdline, "rb").read().split(b"\0")
+            if ("__name:=" + node_name).encode() in args:
+                for line in open(cmdline.replace("cmdline", "status")):
+                    if line.startswith("VmRSS:"):
+                        return int(line.split()[1])
+        except OSError:
+            continue
+    return None
 
 
 def goal_message(x, y, yaw):
@@ -132,12 +163,19 @@ def main():
     parser.add_argument("--timeout", type=float, default=120.0, help="s per goal before it is cancelled")
     parser.add_argument("--goals", help="x,y;x,y;... (default: the five lab goals)")
     parser.add_argument("--json", help="write every drive's record here")
+    parser.add_argument("--duration", type=float, help="s: cycle through the goals until this much time has passed "
+                        "(instead of --rounds)")
+    parser.add_argument("--memory-of", help="ROS node name (e.g. move_base): sample its resident memory every 5 s into "
+                        "<json name>_memory.csv and report it")
+    parser.add_argument("--plan-clearance", type=float, default=0.1125,
+                        help="m: a global plan with a pose nearer an occupied cell than this is invalid (default: the "
+                        "car's inscribed radius + footprint padding)")
     parser.add_argument("--trace", help="write the car's true poses here (CSV: t,x,y,yaw) and the global plans beside it (<name>_plans.json)")
     args = parser.parse_args()
     goals = LAB_GOALS if not args.goals else [tuple(float(v) for v in g.split(",")) for g in args.goals.split(";")]
 
     rospy.init_node("drive_goals", anonymous=True)
-    drive = Drive(OccupiedCells(args.map))
+    drive = Drive(OccupiedCells(args.map), args.plan_clearance)
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     if not client.wait_for_server(rospy.Duration(60)):
         sys.exit("drive_goals: no move_base action server within 60 s")
@@ -145,8 +183,22 @@ def main():
         rospy.sleep(0.1)
     drive.watch_plans()
     records = []
-    for round_index in range(args.rounds):
+    memory = []  # (s since the first goal, KiB)
+    began = time.time()
+    if args.memory_of:
+        def sample(_event):
+            kib = resident_kib(args.memory_of)
+            if kib is not None:
+                memory.append((round(time.time() - began, 1), kib))
+        sample(None)
+        rospy.Timer(rospy.Duration(5.0), sample)
+    rounds = itertools.count() if args.duration else range(args.rounds)
+    for round_index in rounds:
+        if args.duration and time.time() - began >= args.duration:
+            break
         for gx, gy in goals:
+            if args.duration and time.time() - began >= args.duration:
+                break
             x, y, _ = drive.pose
             yaw = math.atan2(gy - y, gx - x)
             drive.reset()
@@ -162,17 +214,29 @@ def main():
             record = dict(round=round_index + 1, goal=[gx, gy], state=state, seconds=round(time.time() - start, 1),
                           final_error_m=round(error, 3), plans=drive.plans,
                           min_centre_clearance_m=round(drive.min_centre, 3),
-                          min_footprint_clearance_m=round(drive.min_footprint, 3), contact_samples=drive.contacts)
+                          min_footprint_clearance_m=round(drive.min_footprint, 3), contact_samples=drive.contacts,
+                          invalid_plans=drive.invalid_plans,
+                          min_plan_clearance_m=round(drive.min_plan_clearance, 3) if drive.plans else None)
             records.append(record)
             print("round %d goal (%.2f, %.2f): %s in %.1f s, %.3f m from the goal, %d plans, min clearance centre "
-                  "%.3f m, footprint %.3f m, %d contact samples" % (
+                  "%.3f m, footprint %.3f m, %d contact samples, %d invalid plans" % (
                       round_index + 1, gx, gy, state, record["seconds"], error, drive.plans, drive.min_centre,
-                      drive.min_footprint, drive.contacts), flush=True)
+                      drive.min_footprint, drive.contacts, drive.invalid_plans), flush=True)
             drive.watch_plans()
     reached = sum(r["state"] == "SUCCEEDED" for r in records)
     print("reached %d of %d goals; min clearance centre %.3f m, footprint %.3f m; %d contact samples" % (
         reached, len(records), min(r["min_centre_clearance_m"] for r in records),
         min(r["min_footprint_clearance_m"] for r in records), sum(r["contact_samples"] for r in records)))
+    plan_clearances = [r["min_plan_clearance_m"] for r in records if r["min_plan_clearance_m"] is not None]
+    print("%d global plans, %d invalid (a pose nearer than %.3f m to an occupied cell); min plan clearance %s" % (
+        sum(r["plans"] for r in records), sum(r["invalid_plans"] for r in records), args.plan_clearance,
+        "%.3f m" % min(plan_clearances) if plan_clearances else "-"))
+    if memory:
+        after_minute = [kib for t, kib in memory if t >= 60.0]
+        print("%s resident memory: %.1f MiB at start, %s, %.1f MiB at the end (%d samples)" % (
+            args.memory_of, memory[0][1] / 1024.0,
+            "%.1f-%.1f MiB after the first minute" % (min(after_minute) / 1024.0, max(after_minute) / 1024.0)
+            if after_minute else "no sample after the first minute", memory[-1][1] / 1024.0, len(memory)))
     if args.trace:
         with open(args.trace, "w") as out:
             out.write("t,x,y,yaw\n")
@@ -182,6 +246,10 @@ def main():
     if args.json:
         with open(args.json, "w") as out:
             json.dump(records, out, indent=1)
+        if memory:
+            with open(os.path.splitext(args.json)[0] + "_memory.csv", "w") as out:
+                out.write("seconds,vmrss_kib\n")
+                out.writelines("%.1f,%d\n" % row for row in memory)
 
 
 if __name__ == "__main__":
