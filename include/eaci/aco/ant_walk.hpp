@@ -139,24 +139,23 @@ struct WalkSetup {
   }
 
   // d_jg + sigma, the quantity Eq. 9 (sigma = 0) and Eq. 16-17 invert, for the move in
-  // direction `dir` into region cell `next`.
+  // direction `dir` from cell `from` into region cell `next`.
   // With leg costs (geodesic islands) d_jg also counts what entering j costs beyond the move's
   // length, so that the ant sees the cost of the cell it steps on: d_jg + sigma is then the
   // cost of the cheapest route through j, less the move's length. On a binary map that excess
   // is 0 and d_jg is the leg distance.
-  double heuristicDistanceInto(std::uint32_t next, std::size_t target, int previous_dir, int dir) const {
+  double heuristicDistance(Cell from, std::uint32_t next, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
-    const std::size_t next_index = region.gridIndex(next);
-    double distance =
-        distance_table.empty() ? distanceToWaypoint(grid->cellAt(next_index), target) : distance_table[target][next];
-    if (!leg_distance.empty()) distance += grid->moveCostInto(next_index, dir) - stepLength(dir);
+    const Cell to = step(from, dir);
+    double distance = distance_table.empty() ? distanceToWaypoint(to, target) : distance_table[target][next];
+    if (!leg_distance.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
     return distance + sigma;
   }
 
   // eta_ij^beta of Eq. 9 or Eq. 16-17, (d_jg + sigma)^-beta, for the allowed move in direction
-  // `dir` from region cell `from`.
-  double heuristicWeight(std::uint32_t from, std::size_t target, int previous_dir, int dir) const {
-    return eta_power(heuristicDistanceInto(region.neighbour(from, dir), target, previous_dir, dir));
+  // `dir` from cell `from` (region cell `from_cell`).
+  double heuristicWeight(Cell from, std::uint32_t from_cell, std::size_t target, int previous_dir, int dir) const {
+    return eta_power(heuristicDistance(from, region.neighbour(from_cell, dir), target, previous_dir, dir));
   }
 };
 
@@ -172,7 +171,8 @@ class AntWalker {
     const CostGrid& grid = *setup.grid;
     const ColonyRegion& region = setup.region;
     beginWalk(region.size());
-    std::uint32_t current = region.regionIndex(grid.index(setup.waypoints.front()));
+    Cell here = setup.waypoints.front();
+    std::uint32_t current = region.regionIndex(grid.index(here));
     route.reset(current);
     visit(current);
     std::size_t target = 1;
@@ -195,7 +195,7 @@ class AntWalker {
         if (waypoint >= 0) continue;  // another island: not on this leg
         candidate_dirs_[count] = d;
         candidate_cells_[count] = j;
-        candidate_weights_[count] = setup.heuristicDistanceInto(j, target, previous_dir, d);
+        candidate_weights_[count] = setup.heuristicDistance(here, j, target, previous_dir, d);
         ++count;
       }
       double total = 0.0;
@@ -213,10 +213,11 @@ class AntWalker {
         chosen_cell = candidate_cells_[k];
       }
       const std::uint32_t next = chosen_cell;
+      here = step(here, chosen);
       route.cells.push_back(next);
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);
-      route.cost += grid.moveCostInto(region.gridIndex(next), chosen);
+      route.cost += grid.moveCostInto(grid.index(here), chosen);
       visit(next);
       previous_dir = chosen;
       current = next;
