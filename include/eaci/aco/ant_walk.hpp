@@ -94,10 +94,14 @@ struct WalkSetup {
   InversePower eta_power{7.0};                // x -> x^-beta
   // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
-  // d_jg tabulated per waypoint over the region (filled by tabulateDistances() when it fits
-  // kMaxDistanceTableEntries): one load per candidate instead of a computation.
+  // d_jg tabulated per waypoint over the region (filled by tabulateDistances() when it fits):
+  // one load per candidate instead of a computation.
   std::vector<std::vector<float>> distance_table;
   static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
+  // Leg distances are tabulated only up to this many entries per region cell (64 bytes, under
+  // half the pheromone's): a table of region cells x islands grows with the square of the
+  // route's length, and memory and set-up should grow with the route.
+  static constexpr std::size_t kMaxLegTableEntriesPerCell = 16;
 
   // Ants on the whole map.
   WalkSetup(const CostGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
@@ -129,7 +133,9 @@ struct WalkSetup {
   // Fills distance_table once the waypoints and leg distances are set, if it fits.
   void tabulateDistances() {
     distance_table.clear();
-    if (region.size() * (waypoints.size() - 1) > kMaxDistanceTableEntries) return;
+    const std::size_t entries = region.size() * (waypoints.size() - 1);
+    if (entries > kMaxDistanceTableEntries) return;
+    if (!leg_distance.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
     distance_table.resize(waypoints.size());
     for (std::size_t z = 1; z < waypoints.size(); ++z) {
       distance_table[z].resize(region.size());
@@ -181,11 +187,13 @@ class AntWalker {
       int count = 0;
       int chosen = -1;
       std::uint32_t chosen_cell = ColonyRegion::kNone;
+      const std::uint8_t allowed = region.moves(current);
       // Eq. 8 numerator tau^alpha * eta^beta, in three passes: gather the allowed moves,
       // raise their heuristic distances to -beta together, multiply.
       for (int d = 0; d < kDirections; ++d) {
-        const std::uint32_t j = region.neighbour(current, d);
-        if (j == ColonyRegion::kNone || visited(j)) continue;
+        if (!(allowed & (1u << d))) continue;
+        const std::uint32_t j = region.neighbourAlong(current, d);
+        if (visited(j)) continue;
         const std::int32_t waypoint = setup.waypoint_of_cell[j];
         if (waypoint == static_cast<std::int32_t>(target)) {
           chosen = d;  // the goal of this leg is a neighbour: take it

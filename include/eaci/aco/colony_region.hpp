@@ -78,10 +78,15 @@ class ColonyRegion {
     for (std::size_t r = 0; r < region.size_; ++r)
       region.region_of_grid_[region.grid_index_[r]] = static_cast<std::uint32_t>(r);
     region.neighbours_.assign(region.size_ * kDirections, kNone);
+    region.moves_.assign(region.size_, 0);
     for (std::size_t r = 0; r < region.size_; ++r) {
       const Cell here = grid.cellAt(region.grid_index_[r]);
-      for (int d = 0; d < kDirections; ++d)
-        if (grid.canMove(here, d)) region.neighbours_[r * kDirections + d] = region.region_of_grid_[grid.index(step(here, d))];
+      for (int d = 0; d < kDirections; ++d) {
+        if (!grid.canMove(here, d)) continue;
+        const std::uint32_t n = region.region_of_grid_[grid.index(step(here, d))];
+        region.neighbours_[r * kDirections + d] = n;
+        if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
+      }
     }
     return region;
   }
@@ -98,20 +103,24 @@ class ColonyRegion {
   }
   bool contains(std::size_t grid_index) const { return regionIndex(grid_index) != kNone; }
 
-  // The region cell one move in direction `dir` from region cell r, kNone when the move is not
-  // allowed or leaves the region.
-  std::uint32_t neighbour(std::uint32_t r, int dir) const {
+  // The moves out of region cell r that stay in the region: bit d for direction d.
+  std::uint8_t moves(std::uint32_t r) const { return moves_[r]; }
+  // The region cell one move in direction `dir` from region cell r, for a move moves(r) allows.
+  std::uint32_t neighbourAlong(std::uint32_t r, int dir) const {
     if (!whole_map_) return neighbours_[static_cast<std::size_t>(r) * kDirections + static_cast<std::size_t>(dir)];
-    if (!(moves_[r] & (1u << dir))) return kNone;
     return static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(r) + index_step_[dir]);
+  }
+  // The same for any move: kNone when it is not allowed or leaves the region.
+  std::uint32_t neighbour(std::uint32_t r, int dir) const {
+    return (moves_[r] & (1u << dir)) ? neighbourAlong(r, dir) : kNone;
   }
 
  private:
   bool whole_map_ = false;
   std::size_t grid_cells_ = 0;
   std::size_t size_ = 0;
-  // Whole map: the grid's moves, a bit per direction per cell, and the index step of each move.
-  std::vector<std::uint8_t> moves_;
+  std::vector<std::uint8_t> moves_;  // per region cell: bit d set when the move in direction d stays in
+  // Whole map: the index step of each move.
   std::array<std::ptrdiff_t, kDirections> index_step_{};
   // Around a route: grid index per region cell, region number per grid cell, neighbours.
   std::vector<std::uint32_t> grid_index_;
