@@ -134,6 +134,21 @@ TEST(ColonyRegion, PheromonePictureIsZeroOutsideTheRegion) {
   for (const Cell& c : r.path) EXPECT_LE(std::abs(c.row - 15), 3);
 }
 
+TEST(ColonyRegion, MarginZeroIsTheWholeMapAndANegativeMarginIsRefused) {
+  const CostGrid grid = emptyGrid(30, 30);
+  eaci::Parameters params;
+  params.ants = 10;
+  params.max_iterations = 2;
+  params.region_margin = 0;
+  eaci::PlanOptions options;
+  options.record_pheromone = true;
+  const eaci::PlanResult r = eaci::plan(grid, Cell{15, 0}, Cell{15, 29}, eaci::Algorithm::kEaci, params, options);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_GT(r.pheromone[grid.index(Cell{0, 0})], 0.0);  // 15 rows from the route: in the whole map
+  params.region_margin = -1;
+  EXPECT_NE(eaci::validationError(params).find("region_margin"), std::string::npos);
+}
+
 TEST(ColonyRegion, EaciInANarrowRegionStillReachesTheAStarCost) {
   // A field of pillars with a long way round: a narrow region (margin 2) around A*'s route is
   // all the ants see, and they still find a route as cheap as A*'s.

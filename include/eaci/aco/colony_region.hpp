@@ -119,7 +119,7 @@ class ColonyRegion {
   bool whole_map_ = false;
   std::size_t grid_cells_ = 0;
   std::size_t size_ = 0;
-  std::vector<std::uint8_t> moves_;  // per region cell: bit d set when the move in direction d stays in
+  std::vector<std::uint8_t> moves_;  // per region cell: bit d when the move in direction d is allowed and stays inside
   // Whole map: the index step of each move.
   std::array<std::ptrdiff_t, kDirections> index_step_{};
   // Around a route: grid index per region cell, region number per grid cell, neighbours.
