@@ -36,9 +36,10 @@ void walkSetupFor(eaci::IslandStrategy strategy, benchmark::State& state,
   eaci::Parameters p = f.params;
   p.island_strategy = strategy;
   eaci::IslandPlan islands = eaci::planIslands(f.grid, f.start, f.goal, p);
-  eaci::PheromoneField field = eaci::initialIslandPheromone(f.grid, islands.islands, p.lambda, p.alpha);
-  const eaci::WalkSetup setup(f.grid, field, islands.islands, eaci::HeuristicRule::kTurningAware, p.beta, p.epsilon,
-                              std::move(islands.leg_distance));
+  eaci::ColonyRegion region = eaci::colonyRegion(f.grid, islands, p);
+  eaci::PheromoneField field = eaci::initialIslandPheromone(f.grid, region, islands.islands, p.lambda, p.alpha);
+  const eaci::WalkSetup setup(f.grid, std::move(region), field, islands.islands, eaci::HeuristicRule::kTurningAware,
+                              p.beta, p.epsilon, std::move(islands.leg_distance));
   for (auto _ : state) body(setup, field);
 }
 

@@ -86,7 +86,7 @@ TEST(Parameters, SetByName) {
   EXPECT_TRUE(p.allow_unknown);
   eaci::setParameter(p, "smooth_path", "true");
   EXPECT_TRUE(p.smooth_path);
-  EXPECT_EQ(eaci::parameterNames().size(), 22u);
+  EXPECT_EQ(eaci::parameterNames().size(), 23u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

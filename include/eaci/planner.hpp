@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eaci/aco/parameters.hpp"
+#include "eaci/aco/pheromone_picture.hpp"
 #include "eaci/aco/solvers.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/grid_view.hpp"
@@ -120,10 +121,8 @@ inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, con
   r.iteration_best_length = colony.run.iteration_best_cost;
   r.best_length_so_far = colony.run.best_cost_so_far;
   for (std::uint32_t index : colony.run.best_cells) r.path.push_back(grid.cellAt(index));
-  if (options.record_pheromone && colony.pheromone.cellCount() == grid.cellCount()) {
-    r.pheromone.resize(grid.cellCount());
-    for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) r.pheromone[cell] = colony.pheromone.strongestFrom(cell);
-  }
+  if (options.record_pheromone && colony.pheromone.cellCount() > 0)
+    r.pheromone = strongestPheromoneByGridCell(colony.pheromone, colony.region);
 }
 
 }  // namespace detail
@@ -174,12 +173,17 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     r.path = shortest.path;
     r.islands = {start, goal};
   } else {
-    if (!reachableFrom(grid, start)[grid.index(goal)])
+    const auto unreachable = [&] {
       return failure(algorithm, PlanStatus::kNoPath,
                      "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start));
+    };
+    // Geodesic EACI finds out itself, from the A* route its islands sit on, without a flood of the map.
+    const bool geodesic = algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kGeodesic;
+    if (!geodesic && !reachableFrom(grid, start)[grid.index(goal)]) return unreachable();
     const ColonyResult colony = algorithm == Algorithm::kEaci
                                     ? solveEaci(grid, start, goal, params, options.should_stop, options.observer)
                                     : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
+    if (colony.goal_unreachable) return unreachable();
     detail::fillFromColony(grid, colony, options, r);
   }
   if (r.path.empty()) {

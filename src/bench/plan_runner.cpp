@@ -53,7 +53,7 @@ RunRecord timedPlan(const PlanRequest& request) {
   eaci::PlanOptions options;
   const double cpu_start = processCpuMilliseconds();
   const Clock::time_point start = Clock::now();
-  options.observer = [&](int iteration, const eaci::PheromoneField&) {
+  options.observer = [&](int iteration, const eaci::PheromoneField&, const eaci::ColonyRegion&) {
     if (iteration > 0) iteration_end_ms.push_back(millisecondsSince(start));
   };
   if (request.budget_ms > 0) {
@@ -77,12 +77,11 @@ RunRecord timedPlan(const PlanRequest& request) {
 std::vector<PheromoneSnapshot> pheromoneSnapshots(const PlanRequest& request, const std::vector<int>& iterations) {
   std::vector<PheromoneSnapshot> snapshots;
   eaci::PlanOptions options;
-  options.observer = [&](int iteration, const eaci::PheromoneField& field) {
+  options.observer = [&](int iteration, const eaci::PheromoneField& field, const eaci::ColonyRegion& region) {
     if (std::find(iterations.begin(), iterations.end(), iteration) == iterations.end()) return;
     PheromoneSnapshot snapshot;
     snapshot.iteration = iteration;
-    snapshot.strongest.resize(field.cellCount());
-    for (std::size_t cell = 0; cell < field.cellCount(); ++cell) snapshot.strongest[cell] = field.strongestFrom(cell);
+    snapshot.strongest = eaci::strongestPheromoneByGridCell(field, region);
     snapshots.push_back(std::move(snapshot));
   };
   eaci::plan(request.view, request.start, request.goal, request.algorithm, request.params, options);

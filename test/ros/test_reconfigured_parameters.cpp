@@ -49,6 +49,7 @@ TEST(ReconfigureConfig, DefaultsAreThePapersAndTheRosLayers) {
   EXPECT_EQ(config.aco_tau0, paper.aco_tau0);
   EXPECT_EQ(config.island_strategy, eaci::toString(paper.island_strategy));
   EXPECT_EQ(config.island_spacing_max, paper.island_spacing_max);
+  EXPECT_EQ(config.region_margin, paper.region_margin);
   EXPECT_EQ(config.early_stop_iterations, paper.early_stop_iterations);
   EXPECT_EQ(static_cast<std::uint64_t>(config.seed), paper.seed);
   EXPECT_EQ(config.threads, paper.threads);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eaci/aco/ant_route.hpp"
+#include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/heuristic.hpp"
 #include "eaci/aco/leg_distance_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
@@ -78,11 +79,14 @@ class InversePower {
 };
 
 // Everything an ant reads; shared by all ants of an iteration and never written during it.
+// Cells are numbered by `region` (ColonyRegion): the pheromone, the waypoint marks and the
+// distance tables are per region cell.
 struct WalkSetup {
   const CostGrid* grid = nullptr;
   const PheromoneField* pheromone = nullptr;
+  ColonyRegion region;                        // the cells the ants may walk on
   std::vector<Cell> waypoints;                // L_1 = S, ..., L_N = E
-  std::vector<std::int32_t> waypoint_of_cell;  // per grid cell: its index in `waypoints`, or -1
+  std::vector<std::int32_t> waypoint_of_cell;  // per region cell: its index in `waypoints`, or -1
   // d_jg of the heuristic: empty -> Euclidean distance to the leg's goal (the paper);
   // else leg_distance[z] is the route cost to waypoint z (geodesic islands).
   std::vector<LegDistanceField> leg_distance;
@@ -90,28 +94,32 @@ struct WalkSetup {
   InversePower eta_power{7.0};                // x -> x^-beta
   // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
-  std::vector<std::uint8_t> moves;            // per cell: bit d set when the move in direction d is allowed
-  std::array<std::ptrdiff_t, kDirections> index_step{};  // grid index difference of each move
-  // d_jg tabulated per waypoint over the whole grid (filled by tabulateDistances() when it
-  // fits kMaxDistanceTableEntries): one load per candidate instead of a computation.
+  // d_jg tabulated per waypoint over the region (filled by tabulateDistances() when it fits):
+  // one load per candidate instead of a computation.
   std::vector<std::vector<float>> distance_table;
   static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
+  // Leg distances are tabulated only up to this many entries per region cell (64 bytes, under
+  // half the pheromone's): a table of region cells x islands grows with the square of the
+  // route's length, and memory and set-up should grow with the route.
+  static constexpr std::size_t kMaxLegTableEntriesPerCell = 16;
 
+  // Ants on the whole map.
   WalkSetup(const CostGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
             double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
-      : grid(&g), pheromone(&field), waypoints(std::move(points)), waypoint_of_cell(g.cellCount(), -1),
-        leg_distance(std::move(leg_distances)), heuristic(rule), eta_power(beta), moves(g.cellCount(), 0) {
+      : WalkSetup(g, ColonyRegion::wholeMap(g), field, std::move(points), rule, beta, epsilon,
+                  std::move(leg_distances)) {}
+
+  // Ants on `cells` (which must hold every waypoint; `field` is indexed by its cells).
+  WalkSetup(const CostGrid& g, ColonyRegion cells, const PheromoneField& field, std::vector<Cell> points,
+            HeuristicRule rule, double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
+      : grid(&g), pheromone(&field), region(std::move(cells)), waypoints(std::move(points)),
+        waypoint_of_cell(region.size(), -1), leg_distance(std::move(leg_distances)), heuristic(rule),
+        eta_power(beta) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
-      waypoint_of_cell[g.index(waypoints[w])] = static_cast<std::int32_t>(w);
+      waypoint_of_cell[region.regionIndex(g.index(waypoints[w]))] = static_cast<std::int32_t>(w);
     if (rule == HeuristicRule::kTurningAware)
       for (int from = 0; from < kDirections; ++from)
         for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] = turningCost(from, to, epsilon);
-    for (int d = 0; d < kDirections; ++d) index_step[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * g.width() + kDirCol[d];
-    for (std::size_t i = 0; i < g.cellCount(); ++i) {
-      const Cell c = g.cellAt(i);
-      for (int d = 0; d < kDirections; ++d)
-        if (g.canMove(c, d)) moves[i] |= static_cast<std::uint8_t>(1u << d);
-    }
     tabulateDistances();
   }
 
@@ -125,32 +133,35 @@ struct WalkSetup {
   // Fills distance_table once the waypoints and leg distances are set, if it fits.
   void tabulateDistances() {
     distance_table.clear();
-    if (grid->cellCount() * (waypoints.size() - 1) > kMaxDistanceTableEntries) return;
+    const std::size_t entries = region.size() * (waypoints.size() - 1);
+    if (entries > kMaxDistanceTableEntries) return;
+    if (!leg_distance.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
     distance_table.resize(waypoints.size());
     for (std::size_t z = 1; z < waypoints.size(); ++z) {
-      distance_table[z].resize(grid->cellCount());
-      for (std::size_t i = 0; i < grid->cellCount(); ++i)
-        distance_table[z][i] = static_cast<float>(distanceToWaypoint(grid->cellAt(i), z));
+      distance_table[z].resize(region.size());
+      for (std::uint32_t r = 0; r < region.size(); ++r)
+        distance_table[z][r] = static_cast<float>(distanceToWaypoint(grid->cellAt(region.gridIndex(r)), z));
     }
   }
 
   // d_jg + sigma, the quantity Eq. 9 (sigma = 0) and Eq. 16-17 invert, for the move in
-  // direction `dir` from cell `from` (grid index `from_index`).
+  // direction `dir` from cell `from` into region cell `next`.
   // With leg costs (geodesic islands) d_jg also counts what entering j costs beyond the move's
   // length, so that the ant sees the cost of the cell it steps on: d_jg + sigma is then the
   // cost of the cheapest route through j, less the move's length. On a binary map that excess
   // is 0 and d_jg is the leg distance.
-  double heuristicDistance(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
+  double heuristicDistance(Cell from, std::uint32_t next, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
-    const auto next = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(from_index) + index_step[dir]);
-    double distance = distance_table.empty() ? distanceToWaypoint(step(from, dir), target) : distance_table[target][next];
-    if (!leg_distance.empty()) distance += grid->moveCostInto(next, dir) - stepLength(dir);
+    const Cell to = step(from, dir);
+    double distance = distance_table.empty() ? distanceToWaypoint(to, target) : distance_table[target][next];
+    if (!leg_distance.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
     return distance + sigma;
   }
 
-  // eta_ij^beta of Eq. 9 or Eq. 16-17: (d_jg + sigma)^-beta.
-  double heuristicWeight(Cell from, std::size_t from_index, std::size_t target, int previous_dir, int dir) const {
-    return eta_power(heuristicDistance(from, from_index, target, previous_dir, dir));
+  // eta_ij^beta of Eq. 9 or Eq. 16-17, (d_jg + sigma)^-beta, for the allowed move in direction
+  // `dir` from cell `from` (region cell `from_cell`).
+  double heuristicWeight(Cell from, std::uint32_t from_cell, std::size_t target, int previous_dir, int dir) const {
+    return eta_power(heuristicDistance(from, region.neighbour(from_cell, dir), target, previous_dir, dir));
   }
 };
 
@@ -164,31 +175,35 @@ class AntWalker {
   // (the d = 0 guard of Eq. 9). An ant with no allowed move is lost: route.complete = false.
   void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route) {
     const CostGrid& grid = *setup.grid;
-    beginWalk(grid.cellCount());
-    std::uint32_t current = static_cast<std::uint32_t>(grid.index(setup.waypoints.front()));
+    const ColonyRegion& region = setup.region;
+    beginWalk(region.size());
+    Cell here = setup.waypoints.front();
+    std::uint32_t current = region.regionIndex(grid.index(here));
     route.reset(current);
     visit(current);
     std::size_t target = 1;
     int previous_dir = -1;
     while (target < setup.waypoints.size()) {
-      const Cell here = grid.cellAt(current);
-      const std::uint8_t allowed = setup.moves[current];
       int count = 0;
       int chosen = -1;
+      std::uint32_t chosen_cell = ColonyRegion::kNone;
+      const std::uint8_t allowed = region.moves(current);
       // Eq. 8 numerator tau^alpha * eta^beta, in three passes: gather the allowed moves,
       // raise their heuristic distances to -beta together, multiply.
       for (int d = 0; d < kDirections; ++d) {
         if (!(allowed & (1u << d))) continue;
-        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(current) + setup.index_step[d]);
+        const std::uint32_t j = region.neighbourAlong(current, d);
         if (visited(j)) continue;
         const std::int32_t waypoint = setup.waypoint_of_cell[j];
         if (waypoint == static_cast<std::int32_t>(target)) {
           chosen = d;  // the goal of this leg is a neighbour: take it
+          chosen_cell = j;
           break;
         }
         if (waypoint >= 0) continue;  // another island: not on this leg
         candidate_dirs_[count] = d;
-        candidate_weights_[count] = setup.heuristicDistance(here, current, target, previous_dir, d);
+        candidate_cells_[count] = j;
+        candidate_weights_[count] = setup.heuristicDistance(here, j, target, previous_dir, d);
         ++count;
       }
       double total = 0.0;
@@ -201,13 +216,16 @@ class AntWalker {
       }
       if (chosen < 0) {
         if (count == 0) return;  // deadlock: a lost ant
-        chosen = rouletteChoice(count, total, rng);
+        const int k = rouletteChoice(count, total, rng);
+        chosen = candidate_dirs_[k];
+        chosen_cell = candidate_cells_[k];
       }
-      const auto next = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(current) + setup.index_step[chosen]);
+      const std::uint32_t next = chosen_cell;
+      here = step(here, chosen);
       route.cells.push_back(next);
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);
-      route.cost += grid.moveCostInto(next, chosen);
+      route.cost += grid.moveCostInto(grid.index(here), chosen);
       visit(next);
       previous_dir = chosen;
       current = next;
@@ -217,18 +235,17 @@ class AntWalker {
   }
 
  private:
-  // Eq. 8 by roulette wheel. Degenerate weights (all zero or overflowing) fall back to a uniform choice.
+  // Eq. 8 by roulette wheel: the chosen candidate's position. Degenerate weights (all zero or
+  // overflowing) fall back to a uniform choice.
   int rouletteChoice(int count, double total, SplitMix64& rng) const {
-    if (!(total > 0.0) || !std::isfinite(total)) {
-      return candidate_dirs_[static_cast<std::size_t>(rng.uniform() * count)];
-    }
+    if (!(total > 0.0) || !std::isfinite(total)) return static_cast<int>(rng.uniform() * count);
     const double ball = rng.uniform() * total;
     double cumulative = 0.0;
     for (int k = 0; k < count; ++k) {
       cumulative += candidate_weights_[k];
-      if (ball < cumulative) return candidate_dirs_[k];
+      if (ball < cumulative) return k;
     }
-    return candidate_dirs_[count - 1];
+    return count - 1;
   }
 
   // Visit marks are stamps, so a new walk costs no clearing.
@@ -248,6 +265,7 @@ class AntWalker {
   std::vector<std::uint32_t> stamps_;
   std::uint32_t stamp_ = 0;
   std::array<int, kDirections> candidate_dirs_{};
+  std::array<std::uint32_t, kDirections> candidate_cells_{};
   std::array<double, kDirections> candidate_weights_{};
 };
 

@@ -13,24 +13,38 @@ namespace eaci {
 // touches an obstacle (and every corner cell) would be blocked.
 enum class AuxiliaryBorder { kFree, kObstacle };
 
-// Eq. 12: a free cell becomes an obstacle when two perpendicular 4-neighbours
-// are obstacles: (left & up), (up & right), (right & down) or (down & left).
-// One pass reading the original map only; `start` and `goal` are never converted.
-inline CostGrid auxiliaryMap(const CostGrid& original, Cell start, Cell goal,
-                               AuxiliaryBorder border = AuxiliaryBorder::kFree) {
-  CostGrid aux = original;
+// Eq. 12 for one free cell of the map: true when it becomes an obstacle, because two
+// perpendicular 4-neighbours are obstacles: (left & up), (up & right), (right & down) or
+// (down & left). `start` and `goal` are never converted.
+inline bool auxiliaryConverts(const CostGrid& original, Cell cell, Cell start, Cell goal,
+                              AuxiliaryBorder border = AuxiliaryBorder::kFree) {
+  if (cell == start || cell == goal) return false;
   auto blocked = [&](int r, int c) {
     const Cell n{r, c};
     if (!original.contains(n)) return border == AuxiliaryBorder::kObstacle;
     return original.isBlocked(n);
   };
+  const int r = cell.row, c = cell.col;
+  const bool left = blocked(r, c - 1), up = blocked(r - 1, c);
+  const bool right = blocked(r, c + 1), down = blocked(r + 1, c);
+  return (left && up) || (up && right) || (right && down) || (down && left);
+}
+
+// Is `cell` free on the auxiliary map? Eq. 12 evaluated at that one cell, without the map.
+inline bool freeOnAuxiliaryMap(const CostGrid& original, Cell cell, Cell start, Cell goal,
+                               AuxiliaryBorder border = AuxiliaryBorder::kFree) {
+  return original.isFree(cell) && !auxiliaryConverts(original, cell, start, goal, border);
+}
+
+// The auxiliary map of Eq. 12: one pass reading the original map only.
+inline CostGrid auxiliaryMap(const CostGrid& original, Cell start, Cell goal,
+                               AuxiliaryBorder border = AuxiliaryBorder::kFree) {
+  CostGrid aux = original;
   for (int r = 0; r < original.height(); ++r) {
     for (int c = 0; c < original.width(); ++c) {
       const Cell cell{r, c};
-      if (original.isBlocked(cell) || cell == start || cell == goal) continue;
-      const bool left = blocked(r, c - 1), up = blocked(r - 1, c);
-      const bool right = blocked(r, c + 1), down = blocked(r + 1, c);
-      if ((left && up) || (up && right) || (right && down) || (down && left)) aux.setBlocked(cell, true);
+      if (original.isBlocked(cell)) continue;
+      if (auxiliaryConverts(original, cell, start, goal, border)) aux.setBlocked(cell, true);
     }
   }
   return aux;

@@ -37,8 +37,9 @@ struct ColonyRun {
 
 // Called between iterations with the number of iterations done; returns true to stop.
 using StopCheck = std::function<bool(int)>;
-// Called after each iteration's pheromone update (e.g. to record snapshots).
-using IterationObserver = std::function<void(int iteration, const PheromoneField&)>;
+// Called after each iteration's pheromone update (e.g. to record snapshots), with the field and
+// the region whose cells index it (strongestPheromoneByGridCell maps it onto the grid).
+using IterationObserver = std::function<void(int iteration, const PheromoneField&, const ColonyRegion&)>;
 
 inline int resolveThreadCount(int requested) {
   if (requested > 0) return requested;
@@ -65,7 +66,7 @@ class Colony {
       walkAllAnts(iteration);
       const bool improved = recordIteration(iteration, run);
       updatePheromone();
-      if (observer) observer(iteration, field_);
+      if (observer) observer(iteration, field_, setup_.region);
       since_improvement = improved ? 0 : since_improvement + 1;
       if (params_.early_stop_iterations > 0 && !run.best_cells.empty() &&
           since_improvement >= params_.early_stop_iterations) {
@@ -118,7 +119,8 @@ class Colony {
       run.iteration_best_cost.push_back(best.cost);
       if (best.cost < run.best_cost - kTolerance) {
         run.best_cost = best.cost;
-        run.best_cells = best.cells;
+        run.best_cells.resize(best.cells.size());
+        for (std::size_t k = 0; k < best.cells.size(); ++k) run.best_cells[k] = setup_.region.gridIndex(best.cells[k]);
         run.best_iteration = iteration;
         improved = true;
       }

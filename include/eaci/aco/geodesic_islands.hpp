@@ -40,14 +40,16 @@ inline CellPath descendCostField(const CostGrid& grid, const std::vector<double>
   return route;
 }
 
-// Islands on the cheapest route (`shortest_route`, from descendCostField): after S, the first cell of the route at least r_s
+// Islands on the cheapest route (`shortest_route`, e.g. A*'s): after S, the first cell of the route at least r_s
 // (Eq. 13) further along it that the auxiliary map leaves free, and so on; E is the last
 // island once it is within r_s along the route. The route through the islands is the
 // cheapest route, and consecutive legs never overlap. With `max_spacing` > 0, r_s is capped
 // at that many cells: on large maps long legs would leave the ants' heuristic too flat to
 // guide them (1/d^beta barely differs between neighbours when d is large).
-inline std::vector<Cell> geodesicIslands(const CostGrid& auxiliary, const CellPath& shortest_route, Cell start,
-                                         Cell goal, int island_count, double max_spacing = 0.0) {
+// `free_on_auxiliary(cell)` says whether the auxiliary map leaves a route cell free.
+template <class FreeOnAuxiliary>
+std::vector<Cell> geodesicIslandsWhere(const FreeOnAuxiliary& free_on_auxiliary, const CellPath& shortest_route,
+                                       Cell start, Cell goal, int island_count, double max_spacing = 0.0) {
   std::vector<Cell> islands{start};
   if (start == goal || shortest_route.size() < 2) {
     if (!(start == goal)) islands.push_back(goal);
@@ -62,12 +64,19 @@ inline std::vector<Cell> geodesicIslands(const CostGrid& auxiliary, const CellPa
   double last = 0.0;
   for (std::size_t k = 1; k + 1 < shortest_route.size(); ++k) {
     if (total - last <= spacing + 1e-9) break;  // E is within r_s of the last island
-    if (along[k] - last < spacing - 1e-9 || !auxiliary.isFree(shortest_route[k])) continue;
+    if (along[k] - last < spacing - 1e-9 || !free_on_auxiliary(shortest_route[k])) continue;
     islands.push_back(shortest_route[k]);
     last = along[k];
   }
   islands.push_back(goal);
   return islands;
+}
+
+// The same with the auxiliary map at hand.
+inline std::vector<Cell> geodesicIslands(const CostGrid& auxiliary, const CellPath& shortest_route, Cell start,
+                                         Cell goal, int island_count, double max_spacing = 0.0) {
+  return geodesicIslandsWhere([&](Cell c) { return auxiliary.isFree(c); }, shortest_route, start, goal, island_count,
+                              max_spacing);
 }
 
 }  // namespace eaci

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/cell_numbering.hpp"
@@ -40,14 +41,15 @@ inline double regionEdgePheromone(const Line& line, const Eigen::Vector2d& from,
   return std::numeric_limits<double>::infinity();
 }
 
-// Eq. 21-22 over the whole map. The favourable region FG_z is the axis-aligned rectangle
-// with islands L_z and L_{z+1} at opposite corners; an edge lies in it when both cells
+// Eq. 21-22 over the colony's cells (`cells`; ColonyRegion::wholeMap: the whole map, as in the
+// paper; edges from cells outside are not stored). The favourable region FG_z is the
+// axis-aligned rectangle with islands L_z and L_{z+1} at opposite corners; an edge lies in it when both cells
 // do. Edges in a region take their Eq. 18-20 value (+infinity -> lambda * max tau0);
 // every other edge takes min tau0. An edge in two regions takes the larger value.
 // When no region edge has a finite value (every region a single line of cells), max tau0
 // and min tau0 are taken as 1.
-inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::vector<Cell>& islands,
-                                             double lambda, double alpha) {
+inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyRegion& cells,
+                                             const std::vector<Cell>& islands, double lambda, double alpha) {
   // (edge, value) of every region edge; the regions are small, so this is much smaller than a
   // value per edge of the map.
   std::vector<std::pair<std::size_t, double>> region_value;
@@ -67,11 +69,13 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::ve
           if (!in_region(to) || !grid.canMove(from, d)) continue;
           const double value =
               regionEdgePheromone(line, cellCentre(from, grid.height()), cellCentre(to, grid.height()));
-          region_value.emplace_back(grid.index(from) * kDirections + static_cast<std::size_t>(d), value);
           if (std::isfinite(value)) {
             max_tau0 = std::max(max_tau0, value);
             min_tau0 = std::min(min_tau0, value);
           }
+          const std::uint32_t from_cell = cells.regionIndex(grid.index(from));
+          if (from_cell != ColonyRegion::kNone)
+            region_value.emplace_back(std::size_t{from_cell} * kDirections + static_cast<std::size_t>(d), value);
         }
       }
     }
@@ -80,7 +84,7 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::ve
 
   // An edge in two regions: its largest value (sorting puts it last among the edge's entries).
   std::sort(region_value.begin(), region_value.end());
-  PheromoneField field(grid.cellCount(), min_tau0, alpha);
+  PheromoneField field(cells.size(), min_tau0, alpha);
   for (std::size_t k = 0; k < region_value.size(); ++k) {
     if (k + 1 < region_value.size() && region_value[k + 1].first == region_value[k].first) continue;
     const auto [edge, value] = region_value[k];
@@ -88,6 +92,12 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::ve
   }
   field.refreshChanged();
   return field;
+}
+
+// The same over the whole map.
+inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::vector<Cell>& islands, double lambda,
+                                             double alpha) {
+  return initialIslandPheromone(grid, ColonyRegion::wholeMap(grid), islands, lambda, alpha);
 }
 
 }  // namespace eaci

@@ -56,6 +56,10 @@ struct Parameters {
   bool smooth_path = false;
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
   double island_spacing_max = 6.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
+  // Geodesic islands: the ants walk on the cells at most this many moves from the cheapest
+  // route (ColonyRegion), so memory and set-up follow the route, not the map; 0 = the whole
+  // map. The paper's islands and classic ACO always use the whole map.
+  int region_margin = 12;
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
@@ -90,6 +94,8 @@ inline std::string validationError(const Parameters& p) {
     e << "lethal_cost must be in 1..255, the costmap cost at or above which a cell is an obstacle (got " << p.lethal_cost << ")";
   else if (!finite(p.island_spacing_max) || p.island_spacing_max < 0)
     e << "island_spacing_max must be a number of cells >= 0 (got " << p.island_spacing_max << ")";
+  else if (p.region_margin < 0 || p.region_margin > 1000000)
+    e << "region_margin must be in 0..1000000 cells, 0 = the whole map (got " << p.region_margin << ")";
   else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
@@ -214,6 +220,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"island_spacing_max",
        {[](Parameters& p, const std::string& v) { p.island_spacing_max = parseDouble("island_spacing_max", v); },
         [](const Parameters& p) { return ParameterValue{p.island_spacing_max}; }}},
+      {"region_margin", {[](Parameters& p, const std::string& v) { p.region_margin = parseInt("region_margin", v); },
+                         [](const Parameters& p) { return ParameterValue{std::int64_t{p.region_margin}}; }}},
       {"early_stop_iterations",
        {[](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); },
         [](const Parameters& p) { return ParameterValue{std::int64_t{p.early_stop_iterations}}; }}},

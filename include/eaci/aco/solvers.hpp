@@ -8,6 +8,7 @@
 
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/aco/colony.hpp"
+#include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/geodesic_islands.hpp"
 #include "eaci/aco/initial_pheromone.hpp"
 #include "eaci/aco/islands.hpp"
@@ -18,32 +19,45 @@ namespace eaci {
 
 struct ColonyResult {
   std::vector<Cell> waypoints;  // EACI: the islands L_1 = S .. L_N = E; ACO: S, E
+  bool goal_unreachable = false;  // geodesic EACI: no route from S to E (nothing else was done)
   ColonyRun run;
-  PheromoneField pheromone;     // the field after the last iteration
+  ColonyRegion region;          // the cells the ants walked on
+  PheromoneField pheromone;     // the field after the last iteration, per cell of `region`
 };
 
 struct IslandPlan {
   std::vector<Cell> islands;                   // L_1 = S, ..., L_N = E
   std::vector<LegDistanceField> leg_distance;  // empty: the paper's straight-line d_jg
+  CellPath route;                              // geodesic: the cheapest route S .. E the islands are on
 };
 
 // Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
-// kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route,
-// with exact leg costs.
+// kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route
+// (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
+// they never build the auxiliary map.
 inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params) {
-  const CostGrid aux = auxiliaryMap(grid, start, goal);
   if (params.island_strategy == IslandStrategy::kPaper)
-    return {paperIslands(aux, reachableFrom(grid, start), start, goal, params.islands), {}};
-  const CellPath route = descendCostField(grid, costField(grid, goal), start);
-  IslandPlan plan{geodesicIslands(aux, route, start, goal, params.islands, params.island_spacing_max), {}};
-  plan.leg_distance = legDistanceFields(grid, route, plan.islands);
+    return {paperIslands(auxiliaryMap(grid, start, goal), reachableFrom(grid, start), start, goal, params.islands), {}, {}};
+  IslandPlan plan;
+  plan.route = shortestPath(grid, start, goal).path;
+  if (plan.route.empty()) return plan;
+  plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
+                                      start, goal, params.islands, params.island_spacing_max);
+  plan.leg_distance = legDistanceFields(grid, plan.route, plan.islands);
   return plan;
+}
+
+// The cells the colony works on: geodesic islands with region_margin > 0, the cells within that
+// many moves of the route; otherwise the whole map.
+inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params) {
+  if (params.island_strategy == IslandStrategy::kGeodesic && params.region_margin > 0)
+    return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin);
+  return ColonyRegion::wholeMap(grid);
 }
 
 // Steps 1-7: auxiliary map and islands (by params.island_strategy), non-uniform initial pheromone, ants walking leg by
 // leg with the turning-aware heuristic, adaptive update. `should_stop` is also asked between
-// the set-up steps (which take a fifth of a second on an 800 x 800 map); stopped there, the
-// result has no route and an empty pheromone field.
+// the set-up steps; stopped there, the result has no route and an empty pheromone field.
 inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
   ColonyResult result;
@@ -52,15 +66,21 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
     return result.run.interrupted;
   };
   IslandPlan islands = planIslands(grid, start, goal, params);
+  if (params.island_strategy == IslandStrategy::kGeodesic && islands.route.empty()) {
+    result.goal_unreachable = true;
+    return result;
+  }
   result.waypoints = islands.islands;
   if (stopped_in_setup()) return result;
-  result.pheromone = initialIslandPheromone(grid, result.waypoints, params.lambda, params.alpha);
+  ColonyRegion region = colonyRegion(grid, islands, params);
+  result.pheromone = initialIslandPheromone(grid, region, result.waypoints, params.lambda, params.alpha);
   if (stopped_in_setup()) return result;
-  if (observer) observer(0, result.pheromone);
-  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kTurningAware, params.beta,
-                        params.epsilon, std::move(islands.leg_distance));
+  WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
+                  params.beta, params.epsilon, std::move(islands.leg_distance));
+  if (observer) observer(0, result.pheromone, setup.region);
   Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
   result.run = colony.run(should_stop, observer);
+  result.region = std::move(setup.region);
   return result;
 }
 
@@ -70,11 +90,12 @@ inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal,
   ColonyResult result;
   result.waypoints = {start, goal};
   result.pheromone = PheromoneField(grid.cellCount(), params.aco_tau0, params.alpha);
-  if (observer) observer(0, result.pheromone);
-  const WalkSetup setup(grid, result.pheromone, result.waypoints, HeuristicRule::kGoalDistance, params.beta,
-                        params.epsilon);
+  WalkSetup setup(grid, ColonyRegion::wholeMap(grid), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
+                  params.beta, params.epsilon);
+  if (observer) observer(0, result.pheromone, setup.region);
   Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal));
   result.run = colony.run(should_stop, observer);
+  result.region = std::move(setup.region);
   return result;
 }
 

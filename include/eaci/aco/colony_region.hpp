@@ -1,0 +1,131 @@
+// The cells an ant colony works on (beyond the paper): the whole map (classic ACO, the paper's
+// islands), or the cells within a margin of a cheapest route (geodesic islands), so that the
+// pheromone, the ants' taboo lists and the heuristic tables grow with the route, not the map.
+//
+// Region cells are numbered 0 .. size() - 1 (in grid index order); pheromone, visit marks and
+// per-cell tables are indexed by that number. On the whole map the number is the grid index.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "eaci/grid/cost_grid.hpp"
+
+namespace eaci {
+
+class ColonyRegion {
+ public:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+  ColonyRegion() = default;
+
+  // Every cell of the map; a move is allowed where CostGrid::canMove allows it.
+  static ColonyRegion wholeMap(const CostGrid& grid) {
+    ColonyRegion region;
+    region.whole_map_ = true;
+    region.grid_cells_ = grid.cellCount();
+    region.size_ = grid.cellCount();
+    for (int d = 0; d < kDirections; ++d)
+      region.index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
+    region.moves_.assign(grid.cellCount(), 0);
+    for (std::size_t i = 0; i < grid.cellCount(); ++i) {
+      const Cell c = grid.cellAt(i);
+      for (int d = 0; d < kDirections; ++d)
+        if (grid.canMove(c, d)) region.moves_[i] |= static_cast<std::uint8_t>(1u << d);
+    }
+    return region;
+  }
+
+  // The free cells at most `margin` moves (CostGrid::canMove) from a cell of `route`; a move
+  // is allowed where the grid allows it and both cells are in the region.
+  static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin) {
+    ColonyRegion region;
+    region.grid_cells_ = grid.cellCount();
+    region.region_of_grid_.assign(grid.cellCount(), kNone);
+    // Breadth first from the route, one ring of moves at a time; marks cells with 0 on entry.
+    std::vector<std::uint32_t> ring;
+    for (const Cell& c : route) {
+      if (!grid.isFree(c)) continue;
+      const auto i = static_cast<std::uint32_t>(grid.index(c));
+      if (region.region_of_grid_[i] == kNone) {
+        region.region_of_grid_[i] = 0;
+        region.grid_index_.push_back(i);
+        ring.push_back(i);
+      }
+    }
+    std::vector<std::uint32_t> next_ring;
+    for (int distance = 1; distance <= margin && !ring.empty(); ++distance) {
+      next_ring.clear();
+      for (std::uint32_t i : ring) {
+        const Cell here = grid.cellAt(i);
+        for (int d = 0; d < kDirections; ++d) {
+          if (!grid.canMove(here, d)) continue;
+          const auto j = static_cast<std::uint32_t>(grid.index(step(here, d)));
+          if (region.region_of_grid_[j] != kNone) continue;
+          region.region_of_grid_[j] = 0;
+          region.grid_index_.push_back(j);
+          next_ring.push_back(j);
+        }
+      }
+      ring.swap(next_ring);
+    }
+    std::sort(region.grid_index_.begin(), region.grid_index_.end());
+    region.size_ = region.grid_index_.size();
+    for (std::size_t r = 0; r < region.size_; ++r)
+      region.region_of_grid_[region.grid_index_[r]] = static_cast<std::uint32_t>(r);
+    region.neighbours_.assign(region.size_ * kDirections, kNone);
+    region.moves_.assign(region.size_, 0);
+    for (std::size_t r = 0; r < region.size_; ++r) {
+      const Cell here = grid.cellAt(region.grid_index_[r]);
+      for (int d = 0; d < kDirections; ++d) {
+        if (!grid.canMove(here, d)) continue;
+        const std::uint32_t n = region.region_of_grid_[grid.index(step(here, d))];
+        region.neighbours_[r * kDirections + d] = n;
+        if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
+      }
+    }
+    return region;
+  }
+
+  std::size_t size() const { return size_; }            // region cells
+  std::size_t gridCellCount() const { return grid_cells_; }
+  bool isWholeMap() const { return whole_map_; }
+
+  // Grid index of region cell r.
+  std::uint32_t gridIndex(std::uint32_t r) const { return whole_map_ ? r : grid_index_[r]; }
+  // Region number of a grid cell, kNone outside the region.
+  std::uint32_t regionIndex(std::size_t grid_index) const {
+    return whole_map_ ? static_cast<std::uint32_t>(grid_index) : region_of_grid_[grid_index];
+  }
+  bool contains(std::size_t grid_index) const { return regionIndex(grid_index) != kNone; }
+
+  // The moves out of region cell r that stay in the region: bit d for direction d.
+  std::uint8_t moves(std::uint32_t r) const { return moves_[r]; }
+  // The region cell one move in direction `dir` from region cell r, for a move moves(r) allows.
+  std::uint32_t neighbourAlong(std::uint32_t r, int dir) const {
+    if (!whole_map_) return neighbours_[static_cast<std::size_t>(r) * kDirections + static_cast<std::size_t>(dir)];
+    return static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(r) + index_step_[dir]);
+  }
+  // The same for any move: kNone when it is not allowed or leaves the region.
+  std::uint32_t neighbour(std::uint32_t r, int dir) const {
+    return (moves_[r] & (1u << dir)) ? neighbourAlong(r, dir) : kNone;
+  }
+
+ private:
+  bool whole_map_ = false;
+  std::size_t grid_cells_ = 0;
+  std::size_t size_ = 0;
+  std::vector<std::uint8_t> moves_;  // per region cell: bit d when the move in direction d is allowed and stays inside
+  // Whole map: the index step of each move.
+  std::array<std::ptrdiff_t, kDirections> index_step_{};
+  // Around a route: grid index per region cell, region number per grid cell, neighbours.
+  std::vector<std::uint32_t> grid_index_;
+  std::vector<std::uint32_t> region_of_grid_;
+  std::vector<std::uint32_t> neighbours_;  // [r * kDirections + d]
+};
+
+}  // namespace eaci
