@@ -128,6 +128,20 @@ void BM_AStarBuilding(benchmark::State& state) {
 }
 BENCHMARK(BM_AStarBuilding)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The same routes with one GridSearchWorkspace kept across the plans (as a node that plans
+// again and again would keep it).
+void BM_AStarBuildingWorkspace(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  const eaci::Cell start{3, 3}, goal = state.range(0) == 0 ? eaci::Cell{1020, 1020} : eaci::Cell{5, 9};
+  eaci::GridSearchWorkspace workspace;
+  for (auto _ : state) {
+    const eaci::ShortestPath p = eaci::shortestPath(grid, start, goal, workspace);
+    benchmark::DoNotOptimize(p.cost);
+  }
+  state.SetLabel(state.range(0) == 0 ? "1024 x 1024, corner to corner" : "1024 x 1024, short route");
+}
+BENCHMARK(BM_AStarBuildingWorkspace)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // The Dijkstra cost field of the whole building (every free cell settled).
 void BM_CostFieldBuilding(benchmark::State& state) {
   const eaci::CostGrid& grid = buildingGrid();
