@@ -203,3 +203,21 @@ TEST(GridSearch, WindowPastTheGridEdgeStaysOnTheGrid) {
   EXPECT_DOUBLE_EQ(workspace.at(Cell{2, 2}), 4.0);
   EXPECT_TRUE(std::isinf(workspace.at(Cell{3, 3})));
 }
+
+// The workspace numbers its searches in 16 bits: when the numbers wrap round, the labels of the
+// search 65 536 searches back must not come back.
+TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 1}}, false);
+  GridSearchWorkspace workspace;
+  GridSearchRequest request;
+  request.source = Cell{0, 0};
+  workspace.search(grid, request);
+  ASSERT_TRUE(workspace.reached(Cell{0, 1}));
+  request.source = Cell{0, 2};  // blocked: reaches nothing
+  for (int k = 0; k < 65535; ++k) workspace.search(grid, request);
+  EXPECT_FALSE(workspace.reached(Cell{0, 1}));
+  EXPECT_FALSE(workspace.reached(Cell{0, 0}));
+  request.source = Cell{0, 1};
+  workspace.search(grid, request);
+  EXPECT_DOUBLE_EQ(workspace.at(Cell{0, 0}), 1.0);
+}

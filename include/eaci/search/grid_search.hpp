@@ -9,8 +9,9 @@
 //
 // Two ways to run it: searchGrid returns a result of its own (a distance per window slot), and
 // GridSearchWorkspace keeps its buffers for the next search (for callers that search often and
-// read few cells, such as A*: nothing is cleared between searches, a generation stamp tells the
-// labels of this search from older ones). Both run the same loop and find the same distances
+// read few cells, such as A*: only a 2-byte generation stamp per cell is cleared, on
+// allocation and then once per 65 535 searches; it tells the labels of this search from older
+// ones). Both run the same loop and find the same distances
 // and moves: cells leave the open list in one total order (SearchEntry), whatever the queue.
 //
 // The loop's speed comes from: an open list that keeps only its lowest priorities in a heap
@@ -23,11 +24,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
-#include <new>
 #include <optional>
 #include <vector>
 
@@ -435,15 +434,15 @@ inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest
 }
 
 // The same search, into buffers that stay for the next one: a caller that keeps a workspace
-// allocates once per map size, and a search costs only the cells it labels (the buffers are
-// never cleared; each label carries the number of the search that wrote it). The moves are
-// always kept (keep_moves is implied). Read the answers before the next search.
+// allocates once per map size, and a search costs only the cells it labels (each label carries
+// the number of the search that wrote it, so the buffers need no clearing between searches).
+// The moves are always kept (keep_moves is implied). Read the answers before the next search.
 class GridSearchWorkspace {
  public:
   void search(const CostGrid& grid, const GridSearchRequest& request) {
     window_ = request.window.value_or(CellWindow::whole(grid));
     prepare(window_.size());
-    Labels labels{nodes_.get(), generation_};
+    Labels labels = currentLabels();
     largest_distance_ = detail::runGridSearch(grid, request, window_, labels, open_, frontier_);
   }
 
@@ -452,7 +451,7 @@ class GridSearchWorkspace {
   // Route cost from the source; +infinity = not reached (or outside the window).
   double at(Cell c) const {
     if (!window_.contains(c)) return std::numeric_limits<double>::infinity();
-    return Labels{nodes_.get(), generation_}.distance(static_cast<std::uint32_t>(window_.slot(c)));
+    return currentLabels().distance(static_cast<std::uint32_t>(window_.slot(c)));
   }
   bool reached(Cell c) const { return std::isfinite(at(c)); }
   // The cells from the source to `c` of a search by distance; empty when `c` was not reached.
@@ -461,7 +460,7 @@ class GridSearchWorkspace {
     if (!reached(c)) return route;
     for (;;) {
       route.push_back(c);
-      const std::uint8_t d = nodes_[window_.slot(c)].move;
+      const std::uint8_t d = moves_[window_.slot(c)];
       if (d == GridSearchResult::kNoMove) break;
       c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
     }
@@ -470,42 +469,49 @@ class GridSearchWorkspace {
   }
 
  private:
-  struct Node {  // all zero bytes: never labelled
-    double distance;
-    std::uint32_t generation;
-    std::uint8_t move;
-  };
+  // A slot's distance and move belong to this search when its generation is this search's;
+  // generation 0 is no search's.
   struct Labels {
-    Node* nodes;
-    std::uint32_t generation;
+    double* distances;
+    std::uint8_t* moves;
+    std::uint16_t* generations;
+    std::uint16_t generation;
     double distance(std::uint32_t slot) const {
-      return nodes[slot].generation == generation ? nodes[slot].distance : std::numeric_limits<double>::infinity();
+      return generations[slot] == generation ? distances[slot] : std::numeric_limits<double>::infinity();
     }
-    void label(std::uint32_t slot, double d, std::uint8_t move) { nodes[slot] = Node{d, generation, move}; }
+    void label(std::uint32_t slot, double d, std::uint8_t move) {
+      distances[slot] = d;
+      moves[slot] = move;
+      generations[slot] = generation;
+    }
   };
-  struct FreeNodes {
-    void operator()(Node* p) const { std::free(p); }
-  };
+  Labels currentLabels() const { return Labels{distances_.get(), moves_.get(), generations_.get(), generation_}; }
 
-  // Room for `slots` labels, none of them this search's. Fresh buffers come zeroed from calloc
-  // (untouched pages cost no memory until a search labels a cell in them).
+  // Room for `slots` labels, none of them this search's. Only the generations are ever cleared
+  // (2 bytes a slot, once per 65 535 searches); distances and moves are read only where the
+  // generation says they were written.
   void prepare(std::size_t slots) {
     if (slots > capacity_) {
-      nodes_.reset();
-      nodes_.reset(static_cast<Node*>(std::calloc(slots, sizeof(Node))));
-      if (!nodes_) throw std::bad_alloc();
+      generations_.reset();  // the old buffers go first
+      distances_.reset();
+      moves_.reset();
+      generations_.reset(new std::uint16_t[slots]());
+      distances_.reset(new double[slots]);
+      moves_.reset(new std::uint8_t[slots]);
       capacity_ = slots;
       generation_ = 0;
     }
     if (++generation_ == 0) {  // the numbers wrapped round: forget every label
-      std::memset(static_cast<void*>(nodes_.get()), 0, capacity_ * sizeof(Node));
+      std::fill(generations_.get(), generations_.get() + capacity_, std::uint16_t{0});
       generation_ = 1;
     }
   }
 
-  std::unique_ptr<Node[], FreeNodes> nodes_;
+  std::unique_ptr<double[]> distances_;
+  std::unique_ptr<std::uint8_t[]> moves_;
+  std::unique_ptr<std::uint16_t[]> generations_;
   std::size_t capacity_ = 0;
-  std::uint32_t generation_ = 0;
+  std::uint16_t generation_ = 0;
   CellWindow window_;
   double largest_distance_ = 0.0;
   detail::SearchQueue open_;
