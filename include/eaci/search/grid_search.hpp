@@ -246,6 +246,7 @@ class SearchQueue {
 
  private:
   static constexpr std::uint64_t kRing = 256;
+  static constexpr std::size_t kKeptBucketCapacity = 256;
   static constexpr std::uint64_t kNoBucket = std::numeric_limits<std::uint64_t>::max();
   // Never falls as the priority grows (huge priorities share the last bucket).
   static std::uint64_t bucketOf(double priority) {
@@ -277,7 +278,10 @@ class SearchQueue {
     for (const SearchEntry& e : bucket)
       if (!stale(e)) heap_.append(SearchHeap::itemOf(e));
     heap_.heapify();
-    bucket.clear();
+    // A bucket that grew large gives its memory back: the ring holds few entries at a time,
+    // but each of its buckets would otherwise keep the most it ever held.
+    if (bucket.capacity() > kKeptBucketCapacity) std::vector<SearchEntry>().swap(bucket);
+    else bucket.clear();
   }
 
   SearchHeap heap_;
