@@ -1,14 +1,17 @@
 // Google Benchmark of the colony's hot loops on the paper's 50 x 50 map (corner cutting
-// allowed, the paper's parameters): one ant's walk, one pheromone update, one iteration.
+// allowed, the paper's parameters): one ant's walk, one pheromone update, one iteration; and of
+// the exact grid search (A*, the Dijkstra cost field) on a generated 1024 x 1024 building.
 //   build/bin/eaci_microbench [--benchmark_filter=...]
 // The map is read from $EACI_MAPS_DIR (default maps/paper).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
 #include "eaci/io/map_io.hpp"
 #include "eaci/planner.hpp"
+#include "eaci/search/astar.hpp"
 
 namespace {
 
@@ -84,6 +87,71 @@ void BM_FullPlan(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "geodesic islands, 100 iterations" : "paper islands, 100 iterations");
 }
 BENCHMARK(BM_FullPlan)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// A 1024 x 1024 "building": rooms of 64 x 64 cells behind one-cell walls, each wall with a
+// door of 6 cells at a place that varies from wall to wall, and an inflation-like cost that
+// falls from 200 next to a wall to 0 four cells away. No corner cutting (the ROS rule).
+const eaci::CostGrid& buildingGrid() {
+  static const eaci::CostGrid grid = [] {
+    constexpr int kSize = 1024, kRoom = 64;
+    eaci::CostGrid g(kSize, kSize, false);
+    const auto door = [](int wall, int room) { return 8 + ((wall * 37 + room * 17) % (kRoom - 20)); };
+    for (int r = 0; r < kSize; ++r) {
+      for (int c = 0; c < kSize; ++c) {
+        const int rr = r % kRoom, cc = c % kRoom;
+        const bool wall_row = rr == 0 && r > 0, wall_col = cc == 0 && c > 0;
+        const bool in_row_door = wall_row && cc >= door(r / kRoom, c / kRoom) && cc < door(r / kRoom, c / kRoom) + 6;
+        const bool in_col_door = wall_col && rr >= door(c / kRoom + 100, r / kRoom) &&
+                                 rr < door(c / kRoom + 100, r / kRoom) + 6;
+        if ((wall_row && !in_row_door) || (wall_col && !in_col_door && !wall_row)) {
+          g.setBlocked(eaci::Cell{r, c}, true);
+          continue;
+        }
+        const int to_wall = std::min({rr, kRoom - rr, cc, kRoom - cc});
+        g.setCost(eaci::Cell{r, c}, static_cast<std::uint8_t>(std::max(0, 200 - 50 * to_wall)));
+      }
+    }
+    return g;
+  }();
+  return grid;
+}
+
+// Arg 0: corner to corner (about 1 400 cells of route, the whole map in play); arg 1: a short
+// route inside the first room.
+void BM_AStarBuilding(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  const eaci::Cell start{3, 3}, goal = state.range(0) == 0 ? eaci::Cell{1020, 1020} : eaci::Cell{5, 9};
+  for (auto _ : state) {
+    const eaci::ShortestPath p = eaci::shortestPath(grid, start, goal);
+    benchmark::DoNotOptimize(p.cost);
+  }
+  state.SetLabel(state.range(0) == 0 ? "1024 x 1024, corner to corner" : "1024 x 1024, short route");
+}
+BENCHMARK(BM_AStarBuilding)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The same routes with one GridSearchWorkspace kept across the plans (as a node that plans
+// again and again would keep it).
+void BM_AStarBuildingWorkspace(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  const eaci::Cell start{3, 3}, goal = state.range(0) == 0 ? eaci::Cell{1020, 1020} : eaci::Cell{5, 9};
+  eaci::GridSearchWorkspace workspace;
+  for (auto _ : state) {
+    const eaci::ShortestPath p = eaci::shortestPath(grid, start, goal, workspace);
+    benchmark::DoNotOptimize(p.cost);
+  }
+  state.SetLabel(state.range(0) == 0 ? "1024 x 1024, corner to corner" : "1024 x 1024, short route");
+}
+BENCHMARK(BM_AStarBuildingWorkspace)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The Dijkstra cost field of the whole building (every free cell settled).
+void BM_CostFieldBuilding(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  for (auto _ : state) {
+    const std::vector<double> field = eaci::costField(grid, eaci::Cell{1020, 1020});
+    benchmark::DoNotOptimize(field.data());
+  }
+}
+BENCHMARK(BM_CostFieldBuilding)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

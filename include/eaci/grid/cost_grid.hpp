@@ -63,6 +63,8 @@ class CostGrid {
   std::size_t cellCount() const { return cells_.size(); }
   bool allowCornerCutting() const { return allow_corner_cutting_; }
   const CostRule& costRule() const { return rule_; }
+  // The cell bytes in index order (cost 0..254, or kObstacle), for loops that read many.
+  const std::uint8_t* cellBytes() const { return cells_.data(); }
 
   std::size_t index(Cell c) const {
     return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.col);

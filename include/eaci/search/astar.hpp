@@ -19,23 +19,29 @@ struct ShortestPath {
 };
 
 // A* from start to goal: a cheapest route (on a binary map, a shortest one). Returns found = false when the goal is unreachable or either
-// cell is off the map or blocked.
-inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal) {
+// cell is off the map or blocked. `workspace` keeps the search's buffers for the next call
+// (same answers with or without it).
+inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, GridSearchWorkspace& workspace) {
   ShortestPath result;
   if (!grid.isFree(start) || !grid.isFree(goal)) return result;
   GridSearchRequest request;
   request.source = start;
   request.target = goal;
   request.keep_moves = true;
-  const GridSearchResult search = searchGrid(grid, request);
-  if (!search.reached(goal)) return result;
+  workspace.search(grid, request);
+  if (!workspace.reached(goal)) return result;
   result.found = true;
-  result.cost = search.at(goal);
-  result.path = search.routeTo(goal);
+  result.cost = workspace.at(goal);
+  result.path = workspace.routeTo(goal);
   result.length = 0.0;
   for (std::size_t k = 1; k < result.path.size(); ++k)
     result.length += stepLength(directionBetween(result.path[k - 1], result.path[k]));
   return result;
+}
+
+inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal) {
+  GridSearchWorkspace workspace;
+  return shortestPath(grid, start, goal, workspace);
 }
 
 // Dijkstra: the cost of a cheapest route from every cell (index order of the grid) to

@@ -6,16 +6,28 @@
 //
 // A route's cost is the sum of its moves' costs (CostGrid::moveCost); the "distance" a search
 // finds is that cost, which on a binary map (every free cell of cost 0) is the grid distance.
+//
+// Two ways to run it: searchGrid returns a result of its own (a distance per window slot), and
+// GridSearchWorkspace keeps its buffers for the next search (for callers that search often and
+// read few cells, such as A*: only a 2-byte generation stamp per cell is cleared, on
+// allocation and then once per 65 535 searches; it tells the labels of this search from older
+// ones). Both run the same loop and find the same distances
+// and moves: cells leave the open list in one total order (SearchEntry), whatever the queue.
+//
+// The loop's speed comes from: an open list that keeps only its lowest priorities in a heap
+// (SearchQueue) and drops entries gone stale before they reach it, integer priority compares,
+// the allowed moves of a cell as one bit mask (no bounds checks away from the border), and, with
+// a workspace, no clearing of whole-map arrays.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
-#include <queue>
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
@@ -113,6 +125,300 @@ struct SearchEntry {
     return slot > o.slot;
   }
 };
+
+// A 4-ary min-heap of entries in SearchEntry's order. Priorities are never negative, so their
+// bit patterns order like their values: the heap compares them as integers (the common case,
+// no tie, picks a child without a branch).
+class SearchHeap {
+ public:
+  struct Item {
+    std::uint64_t key;  // the priority's bits
+    double cost;
+    std::uint32_t slot;
+  };
+  static Item itemOf(const SearchEntry& e) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &e.priority, sizeof bits);
+    return Item{bits, e.cost, e.slot};
+  }
+  static SearchEntry entryOf(const Item& item) {
+    double priority;
+    std::memcpy(&priority, &item.key, sizeof priority);
+    return SearchEntry{priority, item.cost, item.slot};
+  }
+
+  void clear() { heap_.clear(); }
+  bool empty() const { return heap_.empty(); }
+  void push(const Item& item) {
+    std::size_t i = heap_.size();
+    heap_.push_back(item);
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 4;
+      if (!before(item, heap_[parent])) break;
+      heap_[i] = heap_[parent];
+      i = parent;
+    }
+    heap_[i] = item;
+  }
+  Item pop() {  // not empty
+    const Item top = heap_.front();
+    const Item last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) siftDown(0, last);
+    return top;
+  }
+  // Adds items in any order; heapify() restores the heap.
+  void append(const Item& item) { heap_.push_back(item); }
+  void heapify() {
+    for (std::size_t i = heap_.size() / 4 + 1; i-- > 0;)
+      if (i < heap_.size()) siftDown(i, heap_[i]);
+  }
+
+ private:
+  static bool before(const Item& a, const Item& b) {
+    if (__builtin_expect(a.key != b.key, 1)) return a.key < b.key;
+    if (a.cost != b.cost) return a.cost > b.cost;
+    return a.slot < b.slot;
+  }
+  // Puts `item` at `i` or below, moving smaller children up.
+  void siftDown(std::size_t i, const Item item) {
+    const std::size_t n = heap_.size();
+    for (;;) {
+      const std::size_t first = 4 * i + 1;
+      if (first >= n) break;
+      std::size_t best = first;
+      if (first + 4 <= n) {
+        for (std::size_t k = first + 1; k < first + 4; ++k) best = before(heap_[k], heap_[best]) ? k : best;
+      } else {
+        for (std::size_t k = first + 1; k < n; ++k) best = before(heap_[k], heap_[best]) ? k : best;
+      }
+      if (!before(heap_[best], item)) break;
+      heap_[i] = heap_[best];
+      i = best;
+    }
+    heap_[i] = item;
+  }
+
+  std::vector<Item> heap_;
+};
+
+// The open list. Entries are sorted into buckets of priority width 1/4 (a ring of them, and a
+// pile for priorities beyond the ring); only the lowest bucket's entries sit in the heap, so the
+// heap stays small, and the entries of a bucket that went stale while they waited never enter it. Every entry in the heap comes before every entry outside it (a bucket's
+// number never falls as the priority grows), so entries leave in SearchEntry's order, the
+// same as from one big heap: no two entries compare equal (a cell is pushed again only with a
+// smaller cost), so that order is total.
+class SearchQueue {
+ public:
+  void clear() {
+    heap_.clear();
+    for (auto& bucket : ring_) bucket.clear();
+    beyond_.clear();
+    beyond_lowest_ = kNoBucket;
+    current_ = 0;
+    outside_heap_ = 0;
+  }
+  void push(const SearchEntry& entry) {
+    const std::uint64_t bucket = bucketOf(entry.priority);
+    if (bucket <= current_) {
+      heap_.push(SearchHeap::itemOf(entry));
+      return;
+    }
+    ++outside_heap_;
+    if (bucket < current_ + kRing) {
+      ring_[bucket % kRing].push_back(entry);
+    } else {
+      beyond_.push_back(entry);
+      beyond_lowest_ = std::min(beyond_lowest_, bucket);
+    }
+  }
+  // The next entry into `next`; false when there is none. Entries that `stale` finds out of
+  // date (a cheaper label came since) may be dropped on the way: they would be skipped anyway.
+  template <class Stale>
+  bool pop(SearchEntry& next, const Stale& stale) {
+    while (heap_.empty()) {
+      if (outside_heap_ == 0) return false;
+      refill(stale);
+    }
+    next = SearchHeap::entryOf(heap_.pop());
+    return true;
+  }
+
+ private:
+  static constexpr std::uint64_t kRing = 256;
+  static constexpr std::size_t kKeptBucketCapacity = 256;
+  static constexpr std::uint64_t kNoBucket = std::numeric_limits<std::uint64_t>::max();
+  // Never falls as the priority grows (huge priorities share the last bucket).
+  static std::uint64_t bucketOf(double priority) {
+    return static_cast<std::uint64_t>(std::min(priority * 4.0, 4.0e18));
+  }
+
+  // Moves the lowest non-empty bucket, less its stale entries, into the (empty) heap.
+  template <class Stale>
+  void refill(const Stale& stale) {
+    std::uint64_t next = current_ + 1;
+    while (next < current_ + kRing && ring_[next % kRing].empty()) ++next;
+    current_ = next < current_ + kRing ? std::min(next, beyond_lowest_) : beyond_lowest_;
+    if (beyond_lowest_ < current_ + kRing) {  // the pile's entries that the ring now covers join it
+      std::size_t kept = 0;
+      beyond_lowest_ = kNoBucket;
+      for (const SearchEntry& e : beyond_) {
+        const std::uint64_t bucket = bucketOf(e.priority);
+        if (bucket < current_ + kRing) {
+          ring_[bucket % kRing].push_back(e);
+        } else {
+          beyond_[kept++] = e;
+          beyond_lowest_ = std::min(beyond_lowest_, bucket);
+        }
+      }
+      beyond_.resize(kept);
+    }
+    std::vector<SearchEntry>& bucket = ring_[current_ % kRing];
+    outside_heap_ -= bucket.size();
+    for (const SearchEntry& e : bucket)
+      if (!stale(e)) heap_.append(SearchHeap::itemOf(e));
+    heap_.heapify();
+    // A bucket that grew large gives its memory back: the ring holds few entries at a time,
+    // but each of its buckets would otherwise keep the most it ever held.
+    if (bucket.capacity() > kKeptBucketCapacity) std::vector<SearchEntry>().swap(bucket);
+    else bucket.clear();
+  }
+
+  SearchHeap heap_;
+  std::vector<std::vector<SearchEntry>> ring_ = std::vector<std::vector<SearchEntry>>(kRing);
+  std::vector<SearchEntry> beyond_;
+  std::uint64_t beyond_lowest_ = kNoBucket;  // the pile's lowest bucket
+  std::uint64_t current_ = 0;                // the heap's bucket
+  std::size_t outside_heap_ = 0;             // entries in the ring and the pile
+};
+
+// The moves the rule allows (bit d: direction d, as CostGrid::canMove) given which neighbours
+// are free (bit d: the neighbour in direction d). Without corner cutting a diagonal also needs
+// the two straight neighbours beside it, directions d - 1 and d + 1.
+inline unsigned allowedMoves(unsigned free_neighbours, bool allow_corner_cutting) {
+  if (allow_corner_cutting) return free_neighbours;
+  const unsigned straight = free_neighbours & 0x55u;
+  const unsigned from_before = ((straight << 1) | (straight >> 7)) & 0xFFu;  // bit d - 1 moved to d
+  const unsigned from_after = ((straight >> 1) | (straight << 7)) & 0xFFu;   // bit d + 1 moved to d
+  return straight | (free_neighbours & 0xAAu & from_before & from_after);
+}
+
+// The neighbours of a cell by direction, as window slot and grid index offsets, and the allowed
+// moves from a cell that stay in the window. Cells off the border of window and grid (all
+// eight neighbours inside both) skip the bounds checks.
+class SearchNeighbourhood {
+ public:
+  SearchNeighbourhood(const CostGrid& grid, const CellWindow& window)
+      : grid_(grid), window_(window), cells_(grid.cellBytes()),
+        row_lo_(std::max(0, window.row0)), row_hi_(std::min(grid.height(), window.row0 + window.rows)),
+        col_lo_(std::max(0, window.col0)), col_hi_(std::min(grid.width(), window.col0 + window.cols)) {
+    for (int d = 0; d < kDirections; ++d) {
+      slot_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * window.cols + kDirCol[d];
+      index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
+    }
+  }
+
+  std::uint32_t slotTowards(std::uint32_t slot, int dir) const {
+    return static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(slot) + slot_step_[dir]);
+  }
+  std::size_t indexTowards(std::size_t index, int dir) const {
+    return static_cast<std::size_t>(static_cast<std::ptrdiff_t>(index) + index_step_[dir]);
+  }
+
+  // Bit d: the move in direction d from `here` (grid index `index`) is allowed and ends in the window.
+  unsigned movesFrom(Cell here, std::size_t index) const {
+    if (here.row > row_lo_ && here.row + 1 < row_hi_ && here.col > col_lo_ && here.col + 1 < col_hi_) {
+      unsigned free_neighbours = 0;
+      for (int d = 0; d < kDirections; ++d)
+        free_neighbours |= static_cast<unsigned>(cells_[indexTowards(index, d)] != CostGrid::kObstacle) << d;
+      return allowedMoves(free_neighbours, grid_.allowCornerCutting());
+    }
+    unsigned free_neighbours = 0, in_window = 0;
+    for (int d = 0; d < kDirections; ++d) {
+      const Cell next = step(here, d);
+      free_neighbours |= static_cast<unsigned>(grid_.isFree(next)) << d;
+      in_window |= static_cast<unsigned>(window_.contains(next)) << d;
+    }
+    return allowedMoves(free_neighbours, grid_.allowCornerCutting()) & in_window;
+  }
+
+ private:
+  const CostGrid& grid_;
+  const CellWindow& window_;
+  const std::uint8_t* cells_;
+  int row_lo_, row_hi_, col_lo_, col_hi_;  // window and grid overlap: rows [row_lo_, row_hi_), columns likewise
+  std::ptrdiff_t slot_step_[kDirections];
+  std::ptrdiff_t index_step_[kDirections];
+};
+
+inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
+
+// The loop of every search, on labels kept by `Labels`: distance(slot) (+infinity when not
+// reached) and label(slot, distance, move). Returns the largest settled distance.
+template <class Labels>
+double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, const CellWindow& window, Labels& labels,
+                     SearchQueue& open, std::vector<std::uint32_t>& frontier) {
+  if (!grid.isFree(request.source) || !window.contains(request.source)) return 0.0;
+  const SearchNeighbourhood around(grid, window);
+  const auto source = static_cast<std::uint32_t>(window.slot(request.source));
+  labels.label(source, 0.0, GridSearchResult::kNoMove);
+
+  if (request.order == SearchOrder::kAnyOrder) {  // a flood: depth first, each cell once
+    frontier.clear();
+    frontier.push_back(source);
+    while (!frontier.empty()) {
+      const std::uint32_t slot = frontier.back();
+      frontier.pop_back();
+      const Cell here = window.cellAt(slot);
+      for (unsigned moves = around.movesFrom(here, grid.index(here)); moves != 0; moves &= moves - 1) {
+        const std::uint32_t j = around.slotTowards(slot, lowestBit(moves));
+        if (labels.distance(j) == 0.0) continue;
+        labels.label(j, 0.0, GridSearchResult::kNoMove);
+        frontier.push_back(j);
+      }
+    }
+    return 0.0;
+  }
+
+  const bool steer = request.target.has_value();
+  const Cell target = request.target.value_or(Cell{});
+  constexpr std::uint32_t kNoTarget = std::numeric_limits<std::uint32_t>::max();
+  const std::uint32_t target_slot =
+      steer && window.contains(target) ? static_cast<std::uint32_t>(window.slot(target)) : kNoTarget;
+  double largest_distance = 0.0;
+  open.clear();
+  open.push({steer ? octileDistance(request.source, target) : 0.0, 0.0, source});
+  const auto stale = [&labels](const SearchEntry& e) { return e.cost > labels.distance(e.slot); };
+  SearchEntry top;
+  while (open.pop(top, stale)) {
+    if (stale(top)) continue;  // settled before, by a shorter way
+    largest_distance = std::max(largest_distance, top.cost);
+    if (top.slot == target_slot) break;
+    const Cell here = window.cellAt(top.slot);
+    const std::size_t index = grid.index(here);
+    for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
+      const int d = lowestBit(moves);
+      const std::uint32_t j = around.slotTowards(top.slot, d);
+      const double g =
+          top.cost + grid.moveCostInto(request.reverse_costs ? index : around.indexTowards(index, d), d);
+      if (g >= labels.distance(j)) continue;
+      labels.label(j, g, static_cast<std::uint8_t>(d));
+      open.push({steer ? g + octileDistance(step(here, d), target) : g, g, j});
+    }
+  }
+  return largest_distance;
+}
+
+// Labels in the result's own arrays (filled with +infinity first).
+struct ResultLabels {
+  double* distances;
+  std::uint8_t* moves;  // null: moves not kept
+  double distance(std::uint32_t slot) const { return distances[slot]; }
+  void label(std::uint32_t slot, double d, std::uint8_t move) {
+    distances[slot] = d;
+    if (moves != nullptr) moves[slot] = move;
+  }
+};
 }  // namespace detail
 
 // The search itself. A blocked or off-window source reaches nothing. A move costs by the cell
@@ -122,60 +428,98 @@ struct SearchEntry {
 inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest& request) {
   GridSearchResult result;
   result.window = request.window.value_or(CellWindow::whole(grid));
-  const CellWindow& window = result.window;
-  result.distance.assign(window.size(), std::numeric_limits<double>::infinity());
-  if (request.keep_moves) result.came_dir.assign(window.size(), GridSearchResult::kNoMove);
-  if (!grid.isFree(request.source) || !window.contains(request.source)) return result;
-
-  const auto source = static_cast<std::uint32_t>(window.slot(request.source));
-  result.distance[source] = 0.0;
-  const auto estimate = [&](Cell c) { return request.target ? octileDistance(c, *request.target) : 0.0; };
-  constexpr std::uint32_t kNoTarget = std::numeric_limits<std::uint32_t>::max();
-  const std::uint32_t target_slot = request.target && window.contains(*request.target)
-                                        ? static_cast<std::uint32_t>(window.slot(*request.target))
-                                        : kNoTarget;
-
-  if (request.order == SearchOrder::kAnyOrder) {  // a flood: depth first, each cell once
-    std::vector<std::uint32_t> frontier{source};
-    while (!frontier.empty()) {
-      const Cell here = window.cellAt(frontier.back());
-      frontier.pop_back();
-      for (int d = 0; d < kDirections; ++d) {
-        if (!grid.canMove(here, d)) continue;
-        const Cell next = step(here, d);
-        if (!window.contains(next)) continue;
-        const auto j = static_cast<std::uint32_t>(window.slot(next));
-        if (result.distance[j] == 0.0) continue;
-        result.distance[j] = 0.0;
-        frontier.push_back(j);
-      }
-    }
-    return result;
-  }
-
-  std::priority_queue<detail::SearchEntry, std::vector<detail::SearchEntry>, std::greater<detail::SearchEntry>> open;
-  open.push({estimate(request.source), 0.0, source});
-  while (!open.empty()) {
-    const detail::SearchEntry top = open.top();
-    open.pop();
-    if (top.cost > result.distance[top.slot]) continue;  // settled before, by a shorter way
-    result.largest_distance = std::max(result.largest_distance, top.cost);
-    if (top.slot == target_slot) break;
-    const Cell here = window.cellAt(top.slot);
-    for (int d = 0; d < kDirections; ++d) {
-      if (!grid.canMove(here, d)) continue;
-      const Cell next = step(here, d);
-      if (!window.contains(next)) continue;
-      const auto j = static_cast<std::uint32_t>(window.slot(next));
-      const double g = top.cost + (request.reverse_costs ? grid.moveCostInto(grid.index(here), d)
-                                                         : grid.moveCost(here, d));
-      if (g >= result.distance[j]) continue;
-      result.distance[j] = g;
-      if (request.keep_moves) result.came_dir[j] = static_cast<std::uint8_t>(d);
-      open.push({g + estimate(next), g, j});
-    }
-  }
+  result.distance.assign(result.window.size(), std::numeric_limits<double>::infinity());
+  if (request.keep_moves) result.came_dir.assign(result.window.size(), GridSearchResult::kNoMove);
+  detail::ResultLabels labels{result.distance.data(), request.keep_moves ? result.came_dir.data() : nullptr};
+  detail::SearchQueue open;
+  std::vector<std::uint32_t> frontier;
+  result.largest_distance = detail::runGridSearch(grid, request, result.window, labels, open, frontier);
   return result;
 }
+
+// The same search, into buffers that stay for the next one: a caller that keeps a workspace
+// allocates once per map size, and a search costs only the cells it labels (each label carries
+// the number of the search that wrote it, so the buffers need no clearing between searches).
+// The moves are always kept (keep_moves is implied). Read the answers before the next search.
+class GridSearchWorkspace {
+ public:
+  void search(const CostGrid& grid, const GridSearchRequest& request) {
+    window_ = request.window.value_or(CellWindow::whole(grid));
+    prepare(window_.size());
+    Labels labels = currentLabels();
+    largest_distance_ = detail::runGridSearch(grid, request, window_, labels, open_, frontier_);
+  }
+
+  const CellWindow& window() const { return window_; }
+  double largestDistance() const { return largest_distance_; }  // over the settled cells
+  // Route cost from the source; +infinity = not reached (or outside the window).
+  double at(Cell c) const {
+    if (!window_.contains(c)) return std::numeric_limits<double>::infinity();
+    return currentLabels().distance(static_cast<std::uint32_t>(window_.slot(c)));
+  }
+  bool reached(Cell c) const { return std::isfinite(at(c)); }
+  // The cells from the source to `c` of a search by distance; empty when `c` was not reached.
+  CellPath routeTo(Cell c) const {
+    CellPath route;
+    if (!reached(c)) return route;
+    for (;;) {
+      route.push_back(c);
+      const std::uint8_t d = moves_[window_.slot(c)];
+      if (d == GridSearchResult::kNoMove) break;
+      c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
+    }
+    std::reverse(route.begin(), route.end());
+    return route;
+  }
+
+ private:
+  // A slot's distance and move belong to this search when its generation is this search's;
+  // generation 0 is no search's.
+  struct Labels {
+    double* distances;
+    std::uint8_t* moves;
+    std::uint16_t* generations;
+    std::uint16_t generation;
+    double distance(std::uint32_t slot) const {
+      return generations[slot] == generation ? distances[slot] : std::numeric_limits<double>::infinity();
+    }
+    void label(std::uint32_t slot, double d, std::uint8_t move) {
+      distances[slot] = d;
+      moves[slot] = move;
+      generations[slot] = generation;
+    }
+  };
+  Labels currentLabels() const { return Labels{distances_.get(), moves_.get(), generations_.get(), generation_}; }
+
+  // Room for `slots` labels, none of them this search's. Only the generations are ever cleared
+  // (2 bytes a slot, once per 65 535 searches); distances and moves are read only where the
+  // generation says they were written.
+  void prepare(std::size_t slots) {
+    if (slots > capacity_) {
+      generations_.reset();  // the old buffers go first
+      distances_.reset();
+      moves_.reset();
+      generations_.reset(new std::uint16_t[slots]());
+      distances_.reset(new double[slots]);
+      moves_.reset(new std::uint8_t[slots]);
+      capacity_ = slots;
+      generation_ = 0;
+    }
+    if (++generation_ == 0) {  // the numbers wrapped round: forget every label
+      std::fill(generations_.get(), generations_.get() + capacity_, std::uint16_t{0});
+      generation_ = 1;
+    }
+  }
+
+  std::unique_ptr<double[]> distances_;
+  std::unique_ptr<std::uint8_t[]> moves_;
+  std::unique_ptr<std::uint16_t[]> generations_;
+  std::size_t capacity_ = 0;
+  std::uint16_t generation_ = 0;
+  CellWindow window_;
+  double largest_distance_ = 0.0;
+  detail::SearchQueue open_;
+  std::vector<std::uint32_t> frontier_;
+};
 
 }  // namespace eaci
