@@ -197,12 +197,21 @@ TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
 }
 
 TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
-  // Never allocated: the check runs on the dimensions. A* has no pheromone and is not capped.
+  // Never allocated: the check runs on the dimensions. Only colonies that keep pheromone on
+  // the whole map are capped: classic ACO, the paper's islands and region_margin 0 (geodesic
+  // EACI keeps it for its region around the route; A* has none).
   const std::size_t side = 5000;  // 25 M cells * 128 B = 3 GiB > 2 GiB
   const CostGrid grid(static_cast<int>(side), static_cast<int>(side), false);
-  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 1}, Algorithm::kEaci, quickParameters());
-  EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
-  EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;
+  eaci::Parameters paper = quickParameters();
+  paper.island_strategy = eaci::IslandStrategy::kPaper;
+  eaci::Parameters whole_map = quickParameters();
+  whole_map.region_margin = 0;
+  for (const auto& [algorithm, params] : {std::pair<Algorithm, eaci::Parameters>{Algorithm::kAco, quickParameters()},
+                                          {Algorithm::kEaci, paper}, {Algorithm::kEaci, whole_map}}) {
+    const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 1}, algorithm, params);
+    EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
+    EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;
+  }
 }
 
 TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {

@@ -44,8 +44,10 @@ enum class PlanStatus {
   kInvalidInput,  // bad parameters, empty map, start/goal off the map or in an obstacle, map too large
 };
 
-// Ant colonies keep two doubles per directed edge: 128 bytes per cell. Maps that would
-// need more than this are refused (about 16.7 million cells, e.g. 4096 x 4096).
+// Ant colonies keep two doubles per directed edge: 128 bytes per cell of the cells they work
+// on. Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) that would
+// need more than this are refused (about 16.7 million cells, e.g. 4096 x 4096); geodesic EACI
+// keeps pheromone only for its region around the route.
 constexpr std::size_t kMaxPheromoneBytes = std::size_t{2} << 30;
 constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
 
@@ -53,6 +55,10 @@ struct PlanOptions {
   bool record_pheromone = false;   // fill PlanResult::pheromone (strongest edge leaving each cell)
   StopCheck should_stop;           // asked between iterations; the best route so far is returned
   IterationObserver observer;      // sees the field at iteration 0 (initial) and after each update
+  // Buffers of the exact search (A*, and the cheapest route geodesic islands sit on), kept by
+  // a caller that plans again and again (the ROS node, the move_base plugin): a plan then
+  // allocates and clears no whole-map search arrays. Null: a workspace of this call's own.
+  GridSearchWorkspace* search_workspace = nullptr;
 };
 
 struct PlanResult {
@@ -148,7 +154,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     const std::string error = detail::endpointError(grid, cell, name);
     if (!error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, error);
   }
-  if (algorithm != Algorithm::kAStar && grid.cellCount() > kMaxPheromoneBytes / kPheromoneBytesPerCell) {
+  // Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) keep
+  // pheromone for every cell; geodesic EACI only for its region around the route.
+  const bool whole_map_colony = algorithm == Algorithm::kAco || params.island_strategy == IslandStrategy::kPaper ||
+                                params.region_margin == 0;
+  if (algorithm != Algorithm::kAStar && whole_map_colony &&
+      grid.cellCount() > kMaxPheromoneBytes / kPheromoneBytesPerCell) {
     std::ostringstream e;
     e << "map of " << grid.width() << " x " << grid.height() << " cells needs "
       << grid.cellCount() * kPheromoneBytesPerCell / (1 << 20) << " MiB of pheromone, over the cap of "
@@ -169,7 +180,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     return r;
   }
   if (algorithm == Algorithm::kAStar) {
-    const ShortestPath shortest = shortestPath(grid, start, goal);
+    GridSearchWorkspace own_workspace;
+    GridSearchWorkspace& workspace = options.search_workspace ? *options.search_workspace : own_workspace;
+    const ShortestPath shortest = shortestPath(grid, start, goal, workspace);
     r.path = shortest.path;
     r.islands = {start, goal};
   } else {
@@ -181,7 +194,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     const bool geodesic = algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kGeodesic;
     if (!geodesic && !reachableFrom(grid, start)[grid.index(goal)]) return unreachable();
     const ColonyResult colony = algorithm == Algorithm::kEaci
-                                    ? solveEaci(grid, start, goal, params, options.should_stop, options.observer)
+                                    ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
+                                                options.search_workspace)
                                     : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
     if (colony.goal_unreachable) return unreachable();
     detail::fillFromColony(grid, colony, options, r);

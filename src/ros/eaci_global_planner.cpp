@@ -118,7 +118,8 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   costs.unknown_value = costmap_2d::NO_INFORMATION;
   const eaci::GridView view(snapshot.cells.data(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                             costs);
-  const GridPlan result = planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag());
+  const GridPlan result =
+      planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag(), &search_workspace_);
   PlanRecord record;
   record.start = {start.pose.position.x, start.pose.position.y};
   record.goal = {goal.pose.position.x, goal.pose.position.y};

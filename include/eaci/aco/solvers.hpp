@@ -35,11 +35,14 @@ struct IslandPlan {
 // kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route
 // (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
 // they never build the auxiliary map.
-inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params) {
+// `workspace`: the exact search's buffers, kept by the caller between plans (null: its own).
+inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+                              GridSearchWorkspace* workspace = nullptr) {
   if (params.island_strategy == IslandStrategy::kPaper)
     return {paperIslands(auxiliaryMap(grid, start, goal), reachableFrom(grid, start), start, goal, params.islands), {}, {}};
   IslandPlan plan;
-  plan.route = shortestPath(grid, start, goal).path;
+  GridSearchWorkspace own_workspace;
+  plan.route = shortestPath(grid, start, goal, workspace ? *workspace : own_workspace).path;
   if (plan.route.empty()) return plan;
   plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
                                       start, goal, params.islands, params.island_spacing_max);
@@ -59,13 +62,14 @@ inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands
 // leg with the turning-aware heuristic, adaptive update. `should_stop` is also asked between
 // the set-up steps; stopped there, the result has no route and an empty pheromone field.
 inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
-                              const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
+                              const StopCheck& should_stop = {}, const IterationObserver& observer = {},
+                              GridSearchWorkspace* search_workspace = nullptr) {
   ColonyResult result;
   const auto stopped_in_setup = [&] {
     if (should_stop && should_stop(0)) result.run.interrupted = true;
     return result.run.interrupted;
   };
-  IslandPlan islands = planIslands(grid, start, goal, params);
+  IslandPlan islands = planIslands(grid, start, goal, params, search_workspace);
   if (params.island_strategy == IslandStrategy::kGeodesic && islands.route.empty()) {
     result.goal_unreachable = true;
     return result;
