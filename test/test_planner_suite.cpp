@@ -224,9 +224,24 @@ TEST(PlannerLimits, StopCheckEndsTheRunAndKeepsTheBestRoute) {
   EXPECT_EQ(r.iterations_run, 3);
 }
 
+TEST(PlannerLimits, StopCheckDuringSetUpGivesTheSearchRouteWithGeodesicIslands) {
+  // A stop check that is true from the start ends the plan right after the islands, before any
+  // ant walks; geodesic EACI then returns the cheapest route its islands sit on (A*'s cost).
+  const CostGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
+  eaci::PlanOptions options;
+  options.should_stop = [](int) { return true; };
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, eaci::Parameters{}, options);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_TRUE(r.route_from_search);
+  EXPECT_EQ(r.iterations_run, 0);
+  EXPECT_NEAR(r.cost, eaci::shortestPath(grid, Cell{0, 0}, Cell{19, 19}).cost, 1e-9);
+  EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{19, 19}), "");
+}
+
 TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
-  // A stop check that is true from the start: asked between the set-up steps, it ends the
-  // plan before any ant walks, even with the pheromone picture asked for.
+  // The paper's islands have no search route to fall back on: a stop check that is true from
+  // the start ends the plan before any ant walks, even with the pheromone picture asked for.
   const CostGrid grid = eaci::test::paperMap("paper-20x20.txt", true);
   eaci::PlanOptions options;
   options.record_pheromone = true;
@@ -235,8 +250,11 @@ TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
     ++asked;
     return true;
   };
-  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, eaci::Parameters{}, options);
+  eaci::Parameters paper;
+  paper.island_strategy = eaci::IslandStrategy::kPaper;
+  const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, paper, options);
   EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_FALSE(r.route_from_search);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.iterations_run, 0);
   EXPECT_EQ(asked, 1);  // right after the islands

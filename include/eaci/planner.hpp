@@ -77,6 +77,9 @@ struct PlanResult {
   int iterations_run = 0;
   bool stopped_early = false;
   bool interrupted = false;
+  // Geodesic EACI stopped (should_stop) before any ant reached the goal: `path` is the cheapest
+  // route (A*) its islands sit on, so a time limit shorter than the colony still gives a route.
+  bool route_from_search = false;
   long long lost_ants_total = 0;
   std::vector<int> lost_ants_per_iteration;
   // The route quality L_k per iteration: the cost (the length on a binary map; the names are
@@ -199,6 +202,10 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
                                     : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
     if (colony.goal_unreachable) return unreachable();
     detail::fillFromColony(grid, colony, options, r);
+    if (r.path.empty() && r.interrupted && !colony.search_route.empty()) {
+      r.path = colony.search_route;
+      r.route_from_search = true;
+    }
   }
   if (r.path.empty()) {
     r.status = PlanStatus::kNoPath;

@@ -136,8 +136,10 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
     return false;
   }
   if (result.stopped_by != StopReason::kNone)
-    ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning the best route so far", name_.c_str(),
-             toString(result.stopped_by), result.result.iterations_run);
+    ROS_INFO("EaciGlobalPlanner %s: %s after %d iterations: returning %s", name_.c_str(),
+             toString(result.stopped_by), result.result.iterations_run,
+             result.result.route_from_search ? "the cheapest route the islands sit on (no ant had arrived yet)"
+                                             : "the best route so far");
   plan = result.path.poses;
   if (options.publish_plan) plan_pub_.publish(result.path);
   if (options.visualize_pheromone && !result.result.pheromone.empty())

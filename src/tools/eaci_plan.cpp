@@ -286,7 +286,7 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
   if (r.algorithm != eaci::Algorithm::kAStar) {
     s << "iterations: converged at " << r.iterations_to_converge << " of " << r.iterations_run << " run";
     if (r.stopped_early) s << " (stopped early)";
-    if (r.interrupted) s << " (interrupted)";
+    if (r.interrupted) s << (r.route_from_search ? " (interrupted before any ant arrived: A*'s route)" : " (interrupted)");
     s << "\n";
     s << "lost ants:  " << r.lost_ants_total << " in total\n";
   }

@@ -82,6 +82,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["iterations_run"] = r.iterations_run;
   j["stopped_early"] = r.stopped_early;
   j["interrupted"] = r.interrupted;
+  j["route_from_search"] = r.route_from_search;
   j["lost_ants_total"] = r.lost_ants_total;
   j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
   j["best_length_per_iteration"] = finiteOrNull(r.iteration_best_length);

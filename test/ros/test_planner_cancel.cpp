@@ -182,7 +182,25 @@ TEST_F(PlannerCancel, ConcurrentPlansRunOneAtATimeAndEachCanBeCancelled) {
 }
 
 // planOnGrid itself (what the node and the plugin call), in this process: ROS is up here, so only
-// the cancel flag stops the colony. Cancelled before the first iteration, no ant has arrived.
+// the cancel flag stops the colony. Cancelled before the first iteration, no ant has arrived:
+// geodesic EACI answers with the cheapest route its islands sit on, the paper's islands with none.
+TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIslands) {
+  std::string file;
+  ASSERT_TRUE(ros::param::get("~map_file", file));
+  const nav_msgs::OccupancyGrid grid = eaci_ros::toOccupancyGrid(eaci::loadMap(file), "map");
+  const eaci::GridView view = eaci_ros::viewOf(grid, 65, true);
+  eaci_ros::RosPlannerOptions options;
+  options.max_planning_time = 0;
+  std::atomic<bool> cancel{true};
+  const auto cancelled = eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625),
+                                              0.0, eaci::Parameters{}, options, &cancel);
+  EXPECT_TRUE(cancelled.ok) << cancelled.error;
+  EXPECT_FALSE(cancelled.path.poses.empty());
+  EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
+  EXPECT_EQ(cancelled.result.iterations_run, 0);
+  EXPECT_TRUE(cancelled.result.route_from_search);
+}
+
 TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
   std::string file;
   ASSERT_TRUE(ros::param::get("~map_file", file));
@@ -191,6 +209,7 @@ TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
   eaci_ros::RosPlannerOptions options;
   options.max_planning_time = 0;
   eaci::Parameters params;
+  params.island_strategy = eaci::IslandStrategy::kPaper;  // no search route to fall back on
   std::atomic<bool> cancel{true};
   const auto cancelled =
       eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params, options, &cancel);

@@ -20,6 +20,7 @@ namespace eaci {
 struct ColonyResult {
   std::vector<Cell> waypoints;  // EACI: the islands L_1 = S .. L_N = E; ACO: S, E
   bool goal_unreachable = false;  // geodesic EACI: no route from S to E (nothing else was done)
+  CellPath search_route;          // geodesic EACI: the cheapest route (A*) its islands sit on
   ColonyRun run;
   ColonyRegion region;          // the cells the ants walked on
   PheromoneField pheromone;     // the field after the last iteration, per cell of `region`
@@ -75,6 +76,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
     return result;
   }
   result.waypoints = islands.islands;
+  result.search_route = islands.route;
   if (stopped_in_setup()) return result;
   ColonyRegion region = colonyRegion(grid, islands, params);
   result.pheromone = initialIslandPheromone(grid, region, result.waypoints, params.lambda, params.alpha);
