@@ -86,7 +86,7 @@ row() {  # LABEL MAP GOAL: one CSV row: A*, EACI 1 thread, EACI all cores
   echo "$1,$3,$a_len,$a_ms,$a_mb,$e1_len,$e1_ms,$e1_mb,$e0_ms,$e0_mb" | tee -a "$CSV"
 }
 
-header="goal,astar_length,astar_ms,astar_rss_mb,eaci_length,eaci_ms,eaci_rss_mb,eaci_threads0_ms,eaci_threads0_rss_mb"
+header="goal_row,goal_col,astar_length,astar_ms,astar_rss_mb,eaci_length,eaci_ms,eaci_rss_mb,eaci_threads0_ms,eaci_threads0_rss_mb"
 CSV="$OUT/size.csv"; echo "map_size,$header" | tee "$CSV"
 for n in 200 400 800 1600; do row "$n" "$OUT/crop$n.map" "$(goal_for 40)"; done
 CSV="$OUT/length.csv"; echo "d,$header" | tee "$CSV"
