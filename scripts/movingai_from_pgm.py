@@ -10,6 +10,10 @@ side cells passable), written independently of the planner's A*.
 
 writes /tmp/gen/rooms256.map and /tmp/gen/rooms256.map.scen. Buckets as in MovingAI's sets:
 floor(optimal length / 4).
+
+--radii R1,R2,... spreads the route lengths (random pairs on a large map are mostly long):
+problem k takes its goal within R(k mod n) cells of its start in x and y (0 = anywhere), e.g.
+`--radii 8,32,128,0` for short, middling and long routes in equal numbers.
 """
 import argparse
 import heapq
@@ -73,6 +77,7 @@ def main():
     parser.add_argument("out_base", help="writes OUT_BASE.map and OUT_BASE.map.scen")
     parser.add_argument("--problems", type=int, default=100)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--radii", default="0", help="goal within R cells of the start, cycled per problem (0 = anywhere)")
     args = parser.parse_args()
 
     width, height, pixels = read_pgm(args.pgm)
@@ -85,9 +90,18 @@ def main():
 
     rng = random.Random(args.seed)
     free = [(x, y) for y in range(height) for x in range(width) if passable[y][x]]
+    radii = [int(r) for r in args.radii.split(",")]
     problems = []
     while len(problems) < args.problems:
-        start, goal = rng.choice(free), rng.choice(free)
+        radius = radii[len(problems) % len(radii)]
+        start = rng.choice(free)
+        if radius == 0:
+            goal = rng.choice(free)
+        else:
+            gx, gy = start[0] + rng.randint(-radius, radius), start[1] + rng.randint(-radius, radius)
+            if not (0 <= gx < width and 0 <= gy < height and passable[gy][gx]):
+                continue
+            goal = (gx, gy)
         if start == goal:
             continue
         length = dijkstra(passable, width, height, start, goal)

@@ -137,6 +137,29 @@ TEST_F(ScenTest, AStarMatchesTheHandComputedOptimaOfEveryProblem) {
   EXPECT_NE(out_.find("6 of 6 problems, 0 A* mismatches"), std::string::npos) << out_;
 }
 
+// Length bands by powers of two of the optimal length: 7, 7, 5 and 7.83 lie in [4, 8),
+// 9.83 and 11.24 in [8, 16).
+TEST_F(ScenTest, ProblemsAreGroupedIntoRouteLengthBands) {
+  const json j = runScen(kData + "/wall.scen", "--seeds 2");
+  const json& bands = j["length_bands"];
+  ASSERT_EQ(bands.size(), 2u);
+  EXPECT_EQ(bands[0]["optimal_length_from"], 4.0);
+  EXPECT_EQ(bands[0]["optimal_length_below"], 8.0);
+  EXPECT_EQ(bands[0]["problems"], 4);
+  EXPECT_EQ(bands[0]["eaci_runs"], 8);
+  EXPECT_EQ(bands[1]["optimal_length_from"], 8.0);
+  EXPECT_EQ(bands[1]["problems"], 2);
+  EXPECT_EQ(bands[1]["eaci_failures"], 0);
+  for (const json& b : bands) {
+    EXPECT_GE(b["worst_gap_pct"].get<double>(), b["median_gap_pct"].get<double>());
+    EXPECT_GE(b["max_time_ratio"].get<double>(), b["median_time_ratio"].get<double>());
+    EXPECT_GT(b["median_astar_ms"].get<double>(), 0.0);
+  }
+  const std::string md = readFile(dir_ / "report" / "scen.md");
+  EXPECT_NE(md.find("| 4–8 | 4 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 8–16 | 2 |"), std::string::npos) << md;
+}
+
 TEST_F(ScenTest, EveryKthProblemAndMapDir) {
   // The scenario copied elsewhere: its map is found through --map-dir.
   fs::copy_file(kData + "/wall.scen", dir_ / "copy.scen");

@@ -54,7 +54,7 @@ void addSweepCommand(CLI::App& app, eaci_bench::SweepOptions& o) {
 void addScaleCommand(CLI::App& app, eaci_bench::ScaleOptions& o, std::vector<std::string>& kinds) {
   CLI::App* cmd = app.add_subcommand("scale", "generated maps of growing size (corner cutting forbidden)");
   cmd->add_option("--sizes", o.sizes, "map sizes (cells per side)")->delimiter(',')->check(CLI::Range(6, 4096));
-  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter, maze")->delimiter(',');
   cmd->add_option("--runs", o.runs, "seeds per case (0 = 5 up to 400 cells, else 3)")->check(CLI::Range(0, 1000));
   cmd->add_option("--out", o.out_dir, "output directory");
   cmd->add_option("--budget-s", o.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
@@ -68,7 +68,7 @@ void addScaleCommand(CLI::App& app, eaci_bench::ScaleOptions& o, std::vector<std
 void addDeadlineCommand(CLI::App& app, eaci_bench::DeadlineOptions& o, std::vector<std::string>& kinds) {
   CLI::App* cmd = app.add_subcommand("deadline", "wall time of a plan against its time limit (max_planning_time)");
   cmd->add_option("--sizes", o.sizes, "map sizes (cells per side)")->delimiter(',')->check(CLI::Range(6, 4096));
-  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter, maze")->delimiter(',');
   cmd->add_option("--limits-s", o.limits_s, "time limits (s)")->delimiter(',')->check(CLI::PositiveNumber);
   cmd->add_option("--runs", o.runs, "map seeds per kind and size")->check(CLI::Range(1, 1000));
   cmd->add_option("--threads", o.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
@@ -80,7 +80,7 @@ void addCostsCommand(CLI::App& app, eaci_bench::CostsOptions& o, std::vector<std
                                               "A* and EACI with and without smoothing");
   cmd->add_option("--sizes", o.sizes, "generated map sizes (cells per side; none: --sizes 0)")->delimiter(',')
       ->check(CLI::Range(0, 4096));
-  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter")->delimiter(',');
+  cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter, maze")->delimiter(',');
   cmd->add_option("--runs", o.runs, "map seeds per kind and size (0 = 20 up to 400 cells, else 10)")->check(CLI::Range(0, 1000));
   cmd->add_option("--lab-map", o.lab_map, "the lab map (map_server YAML); empty: no lab runs");
   cmd->add_option("--lab-seeds", o.lab_seeds, "EACI seeds per lab start/goal pair")->check(CLI::Range(1, 1000));
@@ -111,13 +111,17 @@ void setWidthRange(const std::vector<int>& widths, int& min, int& max) {
 void addMapCommand(CLI::App& app, eaci_bench::MapCommandOptions& o, std::string& kind,
                    std::vector<int>& room_cells, std::vector<int>& door_cells) {
   CLI::App* cmd = app.add_subcommand("map", "one generated map written as a map_server map (trinary YAML + PGM)");
-  cmd->add_option("--kind", kind, "rooms or clutter");
+  cmd->add_option("--kind", kind, "rooms, clutter or maze");
   cmd->add_option("--size", o.size, "cells per side")->check(CLI::Range(6, 4096));
   cmd->add_option("--seed", o.seed, "map seed (the next seed is tried while start and goal are not connected)");
   cmd->add_option("--room-cells", room_cells, "rooms: room widths MIN,MAX (cells; default 10,20)")
       ->delimiter(',')->expected(1, 2)->check(CLI::Range(1, 4096));
   cmd->add_option("--door-cells", door_cells, "rooms: door widths MIN,MAX (cells; default 2,3)")
       ->delimiter(',')->expected(1, 2)->check(CLI::Range(1, 4096));
+  cmd->add_option("--corridor-cells", o.generator.corridor, "maze: corridor width (cells; default 3)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--wall-cells", o.generator.maze_wall, "maze: wall thickness (cells; default 1)")
+      ->check(CLI::Range(1, 4096));
   cmd->add_option("--resolution", o.resolution, "metres per cell")->check(CLI::PositiveNumber);
   cmd->add_option("--out", o.out_yaml, "the map's YAML (the PGM is written beside it)")->required();
 }

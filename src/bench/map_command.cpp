@@ -32,6 +32,8 @@ int runMapCommand(const MapCommandOptions& options) {
   if (options.kind == MapKind::kRooms)
     std::cout << ", rooms " << g.room_min << "-" << g.room_max << " cells, doors " << g.door_min << "-" << g.door_max
               << " cells";
+  if (options.kind == MapKind::kMaze)
+    std::cout << ", corridors " << g.corridor << " cells, walls " << g.maze_wall << " cells";
   std::cout << "\n" << files.yaml_path << "\n" << files.image_path << std::endl;
   return 0;
 }

@@ -7,6 +7,7 @@
 #include "eaci/aco/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/astar.hpp"
+#include "maze.hpp"
 
 namespace eaci_bench {
 
@@ -130,11 +131,19 @@ double obstacleFraction(const eaci::OccupancyMap& map) {
 
 }  // namespace
 
-const char* toString(MapKind kind) { return kind == MapKind::kRooms ? "rooms" : "clutter"; }
+const char* toString(MapKind kind) {
+  switch (kind) {
+    case MapKind::kRooms: return "rooms";
+    case MapKind::kClutter: return "clutter";
+    case MapKind::kMaze: return "maze";
+  }
+  return "?";
+}
 
 bool parseMapKind(const std::string& text, MapKind& kind) {
   if (text == "rooms") kind = MapKind::kRooms;
   else if (text == "clutter") kind = MapKind::kClutter;
+  else if (text == "maze") kind = MapKind::kMaze;
   else return false;
   return true;
 }
@@ -146,6 +155,9 @@ std::string generatorOptionsProblem(const GeneratorOptions& options) {
   if (options.room_min < 1 || options.room_max < options.room_min)
     return "room widths must be 1 <= min <= max cells (got " + std::to_string(options.room_min) + "-" +
            std::to_string(options.room_max) + ")";
+  if (options.corridor < 1 || options.maze_wall < 1)
+    return "maze corridor and wall widths must be >= 1 cell (got " + std::to_string(options.corridor) + ", " +
+           std::to_string(options.maze_wall) + ")";
   return "";
 }
 
@@ -162,10 +174,16 @@ GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const Gener
     Random random(g.seed_used * 1000003ULL + static_cast<std::uint64_t>(size) * 2 + (kind == MapKind::kRooms ? 0 : 1));
     Canvas canvas(size);
     if (kind == MapKind::kRooms) drawRooms(canvas, random, options);
-    else drawClutter(canvas, random);
+    else if (kind == MapKind::kClutter) drawClutter(canvas, random);
     g.map = toMap(canvas);
     g.start = eaci::Cell{0, 0};
     g.goal = eaci::Cell{size - 1, size - 1};
+    if (kind == MapKind::kMaze) {
+      const MazeLayout layout{size, options.corridor, options.maze_wall};
+      if (layout.cellsPerSide() < 1) throw std::runtime_error("maze: the map is narrower than one corridor");
+      g.map.cells = drawMaze(layout, g.seed_used * 1000003ULL + static_cast<std::uint64_t>(size));
+      g.goal = eaci::Cell{layout.lastFree(), layout.lastFree()};
+    }
     g.obstacle_fraction = obstacleFraction(g.map);
     const eaci::CostGrid grid = eaci::CostGrid::fromView(g.map.view(), false);
     const eaci::ShortestPath shortest = eaci::shortestPath(grid, g.start, g.goal);

@@ -2,7 +2,9 @@
 // bottom-right, connected under the robot's move rule (no corner cutting):
 //   rooms   - a grid of rooms 10-20 cells wide, separated by 1-cell walls with a 2-3 cell
 //             door into every neighbouring room (both ranges: GeneratorOptions);
-//   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free.
+//   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free;
+//   maze    - a perfect maze (maze.hpp) with corridors and walls of GeneratorOptions' widths;
+//             the goal is the last free corner (bottom-right unless the size leaves a margin).
 // A map whose start and goal are not connected (checked with A*) is drawn again with the
 // next seed.
 #pragma once
@@ -15,7 +17,7 @@
 
 namespace eaci_bench {
 
-enum class MapKind { kRooms, kClutter };
+enum class MapKind { kRooms, kClutter, kMaze };
 
 const char* toString(MapKind kind);
 bool parseMapKind(const std::string& text, MapKind& kind);
@@ -40,6 +42,8 @@ struct GeneratorOptions {
   int door_max = 3;
   int room_min = 10;  // room widths between walls, cells
   int room_max = 20;
+  int corridor = 3;   // maze: corridor width, cells
+  int maze_wall = 1;  // maze: wall thickness, cells
 };
 
 // Empty when the options can be drawn from, else what is wrong with them (one sentence).

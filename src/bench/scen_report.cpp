@@ -5,6 +5,7 @@
 #include "common/json_number.hpp"
 #include "common/parameters_json.hpp"
 #include "report_format.hpp"
+#include "scen_bands.hpp"
 
 namespace eaci_bench {
 
@@ -32,6 +33,25 @@ nlohmann::json summaryJson(const ScenSummary& s) {
           {"astar_total_ms", s.astar_total_ms},
           {"eaci_total_ms", s.eaci_total_ms},
           {"wall_s", s.wall_s}};
+}
+
+std::string lengthRange(const ScenLengthBand& b) { return fixed(b.lower, 0) + "–" + fixed(b.upper, 0); }
+
+nlohmann::json bandsJson(const std::vector<ScenLengthBand>& bands) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ScenLengthBand& b : bands)
+    out.push_back({{"optimal_length_from", b.lower},
+                   {"optimal_length_below", b.upper},
+                   {"problems", b.problems},
+                   {"eaci_runs", b.eaci_runs},
+                   {"eaci_failures", b.eaci_failures},
+                   {"median_time_ratio", finiteOrNull(b.median_time_ratio)},
+                   {"max_time_ratio", finiteOrNull(b.max_time_ratio)},
+                   {"median_gap_pct", finiteOrNull(b.median_gap_pct)},
+                   {"worst_gap_pct", finiteOrNull(b.worst_gap_pct)},
+                   {"median_astar_ms", b.median_astar_ms},
+                   {"median_eaci_ms", b.median_eaci_ms}});
+  return out;
 }
 
 nlohmann::json problemJson(const ScenProblemResult& r) {
@@ -70,6 +90,7 @@ nlohmann::json scenJson(const ScenResult& result, const ScenOptions& options, co
           {"parameters", eaci::report::parametersToJson(eaci::Parameters{})},
           {"provenance", provenance},
           {"summary", summaryJson(result.summary)},
+          {"length_bands", bandsJson(lengthBands(result.problems))},
           {"problems", problems}};
 }
 
@@ -119,6 +140,16 @@ std::string scenMarkdown(const ScenResult& result, const ScenOptions& options, c
                   fixed(s.worst_gap_pct, 2) + " %", fixed(s.median_time_ratio, 1) + "×", ms(s.astar_total_ms) + " ms",
                   ms(s.eaci_total_ms) + " ms"});
   md << summary.render() << "\n";
+  md << "By route length (bands of the optimal length, cells; times are medians over the band's problems):\n\n";
+  MarkdownTable bands({"optimal length", "problems", "EACI solved", "time EACI/A* median", "EACI/A* worst",
+                       "gap median", "gap worst", "A* ms", "EACI ms"});
+  for (const ScenLengthBand& b : lengthBands(result.problems))
+    bands.addRow({lengthRange(b), std::to_string(b.problems),
+                  std::to_string(b.eaci_runs - b.eaci_failures) + "/" + std::to_string(b.eaci_runs),
+                  fixed(b.median_time_ratio, 2) + "×", fixed(b.max_time_ratio, 2) + "×",
+                  fixed(b.median_gap_pct, 2) + " %", fixed(b.worst_gap_pct, 2) + " %", ms(b.median_astar_ms),
+                  ms(b.median_eaci_ms)});
+  md << bands.render() << "\n";
   MarkdownTable table({"#", "bucket", "start (x,y)", "goal (x,y)", "optimal", "A*", "A* − opt", "EACI", "gap %",
                        "A* ms", "EACI ms", "EACI/A*"});
   for (const ScenProblemResult& r : result.problems) {
