@@ -140,9 +140,15 @@ TEST_F(GeneratedMapFile, MazeCorridorsAndWallsHaveTheAskedWidths) {
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) {
       EXPECT_EQ(count_free(i * 5, j * 5, 3, 3), 9) << i << "," << j;
-      if (i < 9 && j < 9) EXPECT_EQ(count_free(i * 5 + 3, j * 5 + 3, 2, 2), 0) << i << "," << j;
-      if (i < 9) EXPECT_TRUE(count_free(i * 5 + 3, j * 5, 2, 3) % 6 == 0) << "below " << i << "," << j;
-      if (j < 9) EXPECT_TRUE(count_free(i * 5, j * 5 + 3, 3, 2) % 6 == 0) << "right of " << i << "," << j;
+      if (i < 9 && j < 9) {
+        EXPECT_EQ(count_free(i * 5 + 3, j * 5 + 3, 2, 2), 0) << i << "," << j;
+      }
+      if (i < 9) {
+        EXPECT_TRUE(count_free(i * 5 + 3, j * 5, 2, 3) % 6 == 0) << "below " << i << "," << j;
+      }
+      if (j < 9) {
+        EXPECT_TRUE(count_free(i * 5, j * 5 + 3, 3, 2) % 6 == 0) << "right of " << i << "," << j;
+      }
     }
   EXPECT_EQ(count_free(48, 0, 2, 50), 0);
   EXPECT_EQ(count_free(0, 48, 50, 2), 0);

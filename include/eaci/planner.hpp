@@ -77,8 +77,9 @@ struct PlanResult {
   int iterations_run = 0;
   bool stopped_early = false;
   bool interrupted = false;
-  // Geodesic EACI stopped (should_stop) before any ant reached the goal: `path` is the cheapest
-  // route (A*) its islands sit on, so a time limit shorter than the colony still gives a route.
+  // Geodesic EACI ended without an ant reaching the goal (stopped by should_stop before one
+  // arrived, or every ant lost, as on long routes through mazes): `path` is the cheapest route
+  // (A*) its islands sit on, so a robot always gets a route when one exists.
   bool route_from_search = false;
   long long lost_ants_total = 0;
   std::vector<int> lost_ants_per_iteration;
@@ -202,7 +203,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
                                     : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
     if (colony.goal_unreachable) return unreachable();
     detail::fillFromColony(grid, colony, options, r);
-    if (r.path.empty() && r.interrupted && !colony.search_route.empty()) {
+    if (r.path.empty() && !colony.search_route.empty()) {
       r.path = colony.search_route;
       r.route_from_search = true;
     }

@@ -26,7 +26,9 @@ double processCpuMilliseconds() {
 RunRecord recordFrom(const eaci::PlanResult& result, const eaci::Parameters& params) {
   RunRecord run;
   run.seed = params.seed;
-  run.success = result.success();
+  // A route the colony did not find (geodesic EACI's fallback to its search route) is no success here.
+  run.success = result.success() && !result.route_from_search;
+  run.route_from_search = result.route_from_search;
   run.length = result.length;
   run.cost = result.cost;
   run.smoothed_length = result.smoothed_length;

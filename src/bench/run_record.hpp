@@ -24,6 +24,7 @@ struct RunRecord {
   long long lost_ants_total = 0;
   bool stopped_early = false;      // early_stop_iterations without improvement
   bool interrupted = false;        // a time budget stopped it
+  bool route_from_search = false;  // no ant arrived: eaci::plan returned the search route (success is false)
   double time_ms = 0.0;            // wall time around eaci::plan()
   double cpu_ms = 0.0;             // CPU time of the process (all its threads) around eaci::plan()
   double time_to_best_ms = 0.0;    // wall time until the iteration that found the final route ended
@@ -41,7 +42,7 @@ struct RunRecord {
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RunRecord, seed, success, length, cost, smoothed_length,
                                                 total_turn_deg,
                                                 iterations_to_converge, iterations_run, lost_ants_total,
-                                                stopped_early, interrupted, time_ms, cpu_ms, time_to_best_ms,
+                                                stopped_early, interrupted, route_from_search, time_ms, cpu_ms, time_to_best_ms,
                                                 first_iteration_ms, best_length_so_far, iteration_best_length,
                                                 lost_ants_per_iteration, iteration_end_ms, path, smoothed_path,
                                                 islands)
