@@ -184,16 +184,24 @@ TEST_F(PlannerCancel, ConcurrentPlansRunOneAtATimeAndEachCanBeCancelled) {
 // planOnGrid itself (what the node and the plugin call), in this process: ROS is up here, so only
 // the cancel flag stops the colony. Cancelled before the first iteration, no ant has arrived:
 // geodesic EACI answers with the cheapest route its islands sit on, the paper's islands with none.
-TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIslands) {
+namespace {
+
+eaci_ros::GridPlan planLabRoute(const eaci::Parameters& params, const std::atomic<bool>& cancel) {
   std::string file;
-  ASSERT_TRUE(ros::param::get("~map_file", file));
+  EXPECT_TRUE(ros::param::get("~map_file", file));
   const nav_msgs::OccupancyGrid grid = eaci_ros::toOccupancyGrid(eaci::loadMap(file), "map");
   const eaci::GridView view = eaci_ros::viewOf(grid, 65, true);
   eaci_ros::RosPlannerOptions options;
   options.max_planning_time = 0;
-  std::atomic<bool> cancel{true};
-  const auto cancelled = eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625),
-                                              0.0, eaci::Parameters{}, options, &cancel);
+  return eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params,
+                              options, &cancel);
+}
+
+}  // namespace
+
+TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIslands) {
+  const std::atomic<bool> cancel{true};
+  const auto cancelled = planLabRoute(eaci::Parameters{}, cancel);
   EXPECT_TRUE(cancelled.ok) << cancelled.error;
   EXPECT_FALSE(cancelled.path.poses.empty());
   EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
@@ -202,17 +210,10 @@ TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIsland
 }
 
 TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
-  std::string file;
-  ASSERT_TRUE(ros::param::get("~map_file", file));
-  const nav_msgs::OccupancyGrid grid = eaci_ros::toOccupancyGrid(eaci::loadMap(file), "map");
-  const eaci::GridView view = eaci_ros::viewOf(grid, 65, true);
-  eaci_ros::RosPlannerOptions options;
-  options.max_planning_time = 0;
   eaci::Parameters params;
   params.island_strategy = eaci::IslandStrategy::kPaper;  // no search route to fall back on
   std::atomic<bool> cancel{true};
-  const auto cancelled =
-      eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params, options, &cancel);
+  const auto cancelled = planLabRoute(params, cancel);
   EXPECT_FALSE(cancelled.ok);
   EXPECT_TRUE(cancelled.path.poses.empty());
   EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
@@ -220,8 +221,7 @@ TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
   EXPECT_NE(cancelled.error.find("cancelled after 0 iterations, before any ant reached the goal"), std::string::npos)
       << cancelled.error;
   cancel = false;
-  const auto planned =
-      eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params, options, &cancel);
+  const auto planned = planLabRoute(params, cancel);
   EXPECT_TRUE(planned.ok) << planned.error;
   EXPECT_EQ(planned.stopped_by, eaci_ros::StopReason::kNone);
   EXPECT_EQ(planned.result.iterations_run, params.max_iterations);
