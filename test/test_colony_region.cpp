@@ -113,17 +113,23 @@ TEST(ColonyRegion, EquationTwelvePerCellAgreesWithTheAuxiliaryMap) {
   }
 }
 
-TEST(ColonyRegion, PheromonePictureIsZeroOutsideTheRegion) {
-  // 30 x 30 open map, S and E on row 15: the only shortest route is row 15, so with margin 3 the
-  // ants walk on rows 12..18 and nowhere else.
+// EACI with the pheromone picture on a 30 x 30 open map from (15, 0) to (15, 29): the only
+// shortest route is row 15.
+static eaci::PlanResult planAlongRow15(int region_margin, int iterations) {
   const CostGrid grid = emptyGrid(30, 30);
   eaci::Parameters params;
   params.ants = 10;
-  params.max_iterations = 5;
-  params.region_margin = 3;
+  params.max_iterations = iterations;
+  params.region_margin = region_margin;
   eaci::PlanOptions options;
   options.record_pheromone = true;
-  const eaci::PlanResult r = eaci::plan(grid, Cell{15, 0}, Cell{15, 29}, eaci::Algorithm::kEaci, params, options);
+  return eaci::plan(grid, Cell{15, 0}, Cell{15, 29}, eaci::Algorithm::kEaci, params, options);
+}
+
+TEST(ColonyRegion, PheromonePictureIsZeroOutsideTheRegion) {
+  // With margin 3 the ants walk on rows 12..18 and nowhere else.
+  const CostGrid grid = emptyGrid(30, 30);
+  const eaci::PlanResult r = planAlongRow15(3, 5);
   ASSERT_TRUE(r.success()) << r.error;
   ASSERT_EQ(r.pheromone.size(), grid.cellCount());
   for (std::size_t i = 0; i < grid.cellCount(); ++i) {
@@ -136,15 +142,10 @@ TEST(ColonyRegion, PheromonePictureIsZeroOutsideTheRegion) {
 
 TEST(ColonyRegion, MarginZeroIsTheWholeMapAndANegativeMarginIsRefused) {
   const CostGrid grid = emptyGrid(30, 30);
-  eaci::Parameters params;
-  params.ants = 10;
-  params.max_iterations = 2;
-  params.region_margin = 0;
-  eaci::PlanOptions options;
-  options.record_pheromone = true;
-  const eaci::PlanResult r = eaci::plan(grid, Cell{15, 0}, Cell{15, 29}, eaci::Algorithm::kEaci, params, options);
+  const eaci::PlanResult r = planAlongRow15(0, 2);
   ASSERT_TRUE(r.success()) << r.error;
   EXPECT_GT(r.pheromone[grid.index(Cell{0, 0})], 0.0);  // 15 rows from the route: in the whole map
+  eaci::Parameters params;
   params.region_margin = -1;
   EXPECT_NE(eaci::validationError(params).find("region_margin"), std::string::npos);
 }
