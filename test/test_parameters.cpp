@@ -52,6 +52,9 @@ TEST(Parameters, EachBadValueGetsItsOwnReason) {
       {[](auto& p) { p.aco_rho = 0; }, "aco_rho"},
       {[](auto& p) { p.aco_rho = 1.5; }, "aco_rho"},
       {[](auto& p) { p.early_stop_iterations = -1; }, "early_stop_iterations"},
+      {[](auto& p) { p.stop_gap = -0.01; }, "stop_gap must be a fraction in [0, 10]"},
+      {[&](auto& p) { p.stop_gap = nan; }, "stop_gap"},
+      {[](auto& p) { p.stop_gap = 11; }, "stop_gap"},
       {[](auto& p) { p.threads = -1; }, "threads"},
       {[](auto& p) { p.neutral_cost = 0; }, "neutral_cost must be a number in (0, 1e6]"},
       {[&](auto& p) { p.neutral_cost = nan; }, "neutral_cost"},
@@ -86,7 +89,9 @@ TEST(Parameters, SetByName) {
   EXPECT_TRUE(p.allow_unknown);
   eaci::setParameter(p, "smooth_path", "true");
   EXPECT_TRUE(p.smooth_path);
-  EXPECT_EQ(eaci::parameterNames().size(), 23u);
+  eaci::setParameter(p, "stop_gap", "0.01");
+  EXPECT_DOUBLE_EQ(p.stop_gap, 0.01);
+  EXPECT_EQ(eaci::parameterNames().size(), 24u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

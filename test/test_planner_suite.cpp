@@ -265,12 +265,56 @@ TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
 TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
   const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   eaci::Parameters p;
+  p.island_strategy = eaci::IslandStrategy::kPaper;  // knows no cheapest cost: only stagnation stops it
   p.allow_corner_cutting = true;
   p.early_stop_iterations = 5;
   const auto r = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, Algorithm::kEaci, p);
   ASSERT_TRUE(r.success());
   EXPECT_TRUE(r.stopped_early);
   EXPECT_EQ(r.iterations_run, r.iterations_to_converge + 5);
+}
+
+// stop_gap ends a run as soon as its best route is within the gap of A*'s cost (the reference,
+// computed here on its own), and only with early stopping on.
+TEST(PlannerLimits, StopGapEndsTheRunOnceTheRouteIsAsCheapAsAStars) {
+  const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  const Cell start{29, 0}, goal{0, 29};
+  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  eaci::Parameters p;
+  p.allow_corner_cutting = true;
+  p.early_stop_iterations = 1000;  // never by stagnation within max_iterations
+  p.stop_gap = 0.0;
+  const auto r = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_NEAR(r.cost, optimum, 1e-9);
+  EXPECT_TRUE(r.stopped_early);
+  EXPECT_EQ(r.iterations_run, r.iterations_to_converge);  // the iteration that reached it is the last
+  EXPECT_LT(r.iterations_run, p.max_iterations);
+}
+
+TEST(PlannerLimits, StopGapAcceptsARouteWithinTheGapOnACostMap) {
+  // A 40 x 40 room whose cells cost more towards a wall down the middle (a door at the bottom).
+  CostGrid grid(40, 40, false);
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 40; ++c) grid.setCost(Cell{r, c}, static_cast<std::uint8_t>(std::max(0, 200 - 25 * std::abs(c - 20))));
+  for (int r = 0; r < 34; ++r) grid.setBlocked(Cell{r, 20}, true);
+  const Cell start{2, 2}, goal{2, 37};
+  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  eaci::Parameters p;
+  p.early_stop_iterations = 1000;
+  p.stop_gap = 0.05;
+  const auto r = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_LE(r.cost, 1.05 * optimum + 1e-9);
+  EXPECT_TRUE(r.stopped_early);
+  EXPECT_EQ(r.iterations_run, r.iterations_to_converge);
+  // Early stopping off (the paper's protocol): every iteration runs, whatever stop_gap says.
+  p.early_stop_iterations = 0;
+  p.max_iterations = 30;
+  const auto all = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(all.success()) << all.error;
+  EXPECT_FALSE(all.stopped_early);
+  EXPECT_EQ(all.iterations_run, 30);
 }
 
 TEST_P(PlannerSuite, AllObstacleMapIsAClearError) {

@@ -118,8 +118,12 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   costs.unknown_value = costmap_2d::NO_INFORMATION;
   const eaci::GridView view(snapshot.cells.data(), map_frame.width, map_frame.height, eaci::RowOrder::kBottomFirst,
                             costs);
-  const GridPlan result =
-      planOnGrid(view, map_frame, start, goal, tolerance, params, options, cancellation_.flag(), &search_workspace_);
+  // The pheromone picture costs a pass over the whole map and a map-sized message: made only
+  // while someone listens (as navfn's potential is only made when asked for).
+  RosPlannerOptions plan_options = options;
+  plan_options.visualize_pheromone = options.visualize_pheromone && pheromone_pub_.getNumSubscribers() > 0;
+  const GridPlan result = planOnGrid(view, map_frame, start, goal, tolerance, params, plan_options,
+                                     cancellation_.flag(), &search_workspace_);
   PlanRecord record;
   record.start = {start.pose.position.x, start.pose.position.y};
   record.goal = {goal.pose.position.x, goal.pose.position.y};

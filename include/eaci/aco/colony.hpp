@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -28,7 +29,7 @@ struct ColonyRun {
   double best_cost = std::numeric_limits<double>::infinity();
   int best_iteration = 0;                 // iteration (1-based) that first found best_cost
   int iterations_run = 0;
-  bool stopped_early = false;             // early_stop_iterations without improvement
+  bool stopped_early = false;             // early_stop_iterations without improvement, or stop_gap reached
   bool interrupted = false;               // should_stop() said so
   std::vector<int> lost_ants_per_iteration;
   std::vector<double> iteration_best_cost;  // +infinity where no ant completed
@@ -49,8 +50,14 @@ inline int resolveThreadCount(int requested) {
 
 class Colony {
  public:
-  Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se)
+  // `cheapest_cost`: the cost of a cheapest route through the waypoints when known (geodesic
+  // islands), for stop_gap; +infinity when not.
+  Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se,
+         double cheapest_cost = std::numeric_limits<double>::infinity())
       : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
+        good_enough_cost_(std::isfinite(cheapest_cost)
+                              ? cheapest_cost * (1.0 + params.stop_gap) + 1e-9 * std::max(1.0, cheapest_cost)
+                              : -std::numeric_limits<double>::infinity()),
         routes_(static_cast<std::size_t>(params.ants)),
         worker_state_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))),
         workers_(static_cast<int>(worker_state_.size())) {}
@@ -69,7 +76,7 @@ class Colony {
       if (observer) observer(iteration, field_, setup_.region);
       since_improvement = improved ? 0 : since_improvement + 1;
       if (params_.early_stop_iterations > 0 && !run.best_cells.empty() &&
-          since_improvement >= params_.early_stop_iterations) {
+          (since_improvement >= params_.early_stop_iterations || run.best_cost <= good_enough_cost_)) {
         run.stopped_early = true;
         break;
       }
@@ -144,6 +151,7 @@ class Colony {
   const Parameters& params_;
   UpdateRule update_;
   double d_se_;
+  double good_enough_cost_;  // stop_gap: a best route this cheap ends the run (early stopping on)
   std::vector<AntRoute> routes_;
   // What one worker writes at every step, on cache lines of its own (two workers writing to
   // one line would make each wait for the other).

@@ -61,6 +61,11 @@ struct Parameters {
   // map. The paper's islands and classic ACO always use the whole map.
   int region_margin = 12;
   int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
+  // With early stopping on (early_stop_iterations > 0), geodesic EACI also stops as soon as its
+  // best route costs at most (1 + stop_gap) x the cheapest route's cost, which its A* search
+  // knows before the ants start: 0 = once a route is as cheap (no later iteration could beat
+  // it); 0.01 = within 1 %. The paper's islands and classic ACO know no such cost.
+  double stop_gap = 0.0;
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
 };
@@ -97,6 +102,8 @@ inline std::string validationError(const Parameters& p) {
   else if (p.region_margin < 0 || p.region_margin > 1000000)
     e << "region_margin must be in 0..1000000 cells, 0 = the whole map (got " << p.region_margin << ")";
   else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
+  else if (!finite(p.stop_gap) || p.stop_gap < 0 || p.stop_gap > 10)
+    e << "stop_gap must be a fraction in [0, 10], e.g. 0.01 = within 1 % of the cheapest route (got " << p.stop_gap << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
 }
@@ -225,6 +232,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"early_stop_iterations",
        {[](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); },
         [](const Parameters& p) { return ParameterValue{std::int64_t{p.early_stop_iterations}}; }}},
+      {"stop_gap", {[](Parameters& p, const std::string& v) { p.stop_gap = parseDouble("stop_gap", v); },
+                    [](const Parameters& p) { return ParameterValue{p.stop_gap}; }}},
       {"seed",
        {[](Parameters& p, const std::string& v) {
           char* end = nullptr;

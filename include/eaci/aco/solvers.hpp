@@ -3,6 +3,7 @@
 // eaci::plan() checks all of that before it calls them.
 #pragma once
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -84,7 +85,9 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_distance));
   if (observer) observer(0, result.pheromone, setup.region);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal));
+  const double cheapest_cost = result.search_route.empty() ? std::numeric_limits<double>::infinity()
+                                                           : routeCost(grid, result.search_route);
+  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), cheapest_cost);
   result.run = colony.run(should_stop, observer);
   result.region = std::move(setup.region);
   return result;
