@@ -175,6 +175,20 @@ TEST_F(ScenTest, EveryKthProblemAndMapDir) {
   EXPECT_EQ(j["summary"]["eaci_runs"], 3);
 }
 
+TEST_F(ScenTest, ParametersFromAFileButCornerCuttingStaysForbidden) {
+  std::ofstream(dir_ / "params.yaml") << "ants: 7\nallow_corner_cutting: true\nearly_stop_iterations: 3\n";
+  const json j = runScen(kData + "/wall.scen", "--params " + quote((dir_ / "params.yaml").string()));
+  EXPECT_EQ(j["parameters"]["ants"], 7);
+  EXPECT_EQ(j["parameters"]["early_stop_iterations"], 3);
+  EXPECT_EQ(j["parameters"]["allow_corner_cutting"], false);  // MovingAI's rule
+  for (std::size_t k = 0; k < kOptima.size(); ++k)  // still the file's optima, not shorter corner-cutting routes
+    EXPECT_NEAR(j["problems"][k]["astar_length"].get<double>(), kOptima[k], 1e-9);
+  EXPECT_NE(readFile(dir_ / "report" / "scen.md").find("parameters of"), std::string::npos);
+  std::ofstream(dir_ / "bad.yaml") << "ants: 0\n";
+  EXPECT_NE(run(kBench, "scen " + quote(kData + "/wall.scen") + " --params " + quote((dir_ / "bad.yaml").string())), 0);
+  EXPECT_NE(err_.find("ants"), std::string::npos) << err_;
+}
+
 TEST_F(ScenTest, AnOptimumWithCornerCuttingIsAMismatch) {
   // Problem 3's length if corners could be cut (3 + √2): A* (no corner cutting) finds 5.
   fs::copy_file(kData + "/wall.map", dir_ / "wall.map");

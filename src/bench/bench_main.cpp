@@ -15,6 +15,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "eaci/io/parameter_file.hpp"
+
 #include "costs.hpp"
 #include "deadline.hpp"
 #include "map_command.hpp"
@@ -98,6 +100,9 @@ void addScenCommand(CLI::App& app, eaci_bench::ScenOptions& o) {
   cmd->add_option("--map-dir", o.map_dir, "directory of the .map files (default: the .scen file's)");
   cmd->add_option("--seeds", o.seeds, "EACI runs per problem, seeds 1..N")->check(CLI::Range(1, 1000));
   cmd->add_option("--budget-s", o.budget_s, "wall-time cap of one EACI run (s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--params", o.params_path, "EACI's parameters from this flat YAML (e.g. config/eaci_planner.yaml; "
+                                             "default: the project's defaults); corner cutting stays forbidden")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--out", o.out_dir, "output directory");
 }
 
@@ -186,6 +191,9 @@ int main(int argc, char** argv) {
     }
     if (app.got_subcommand("scen")) {
       scen.command_line = command_line;
+      if (!scen.params_path.empty()) eaci::applyParameterFile(scen.params_path, scen.parameters, scen.params_path);
+      scen.parameters.allow_corner_cutting = false;  // MovingAI's rule
+      eaci::validate(scen.parameters);
       return eaci_bench::runScenCommand(scen);
     }
     if (app.got_subcommand("map")) {

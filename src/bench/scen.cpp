@@ -119,7 +119,7 @@ class ScenRunner {
     r.map_path = mapPath(p.map);
     const eaci::OccupancyMap& m = map(r.map_path);
     checkProblem(options_, p, m, r.map_path);
-    eaci::Parameters params;  // the project's defaults: geodesic islands, corner cutting forbidden, 1 thread
+    eaci::Parameters params = options_.parameters;  // the defaults or --params; corner cutting forbidden
     r.astar = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, params, 0.0});
     for (int seed = 1; seed <= options_.seeds; ++seed) {
       params.seed = static_cast<std::uint64_t>(seed);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "eaci/aco/parameters.hpp"
 #include "eaci/io/movingai_scenario.hpp"
 #include "run_record.hpp"
 
@@ -25,6 +26,8 @@ struct ScenOptions {
   std::string out_dir = "out/bench";
   int seeds = 1;              // EACI runs per problem, seeds 1..N
   double budget_s = 60.0;     // wall-time cap of one EACI run
+  std::string params_path;    // --params: EACI's parameters from this flat YAML; empty: the defaults
+  eaci::Parameters parameters;  // what A* and EACI run with (corner cutting always forbidden)
   std::string command_line;
 };
 

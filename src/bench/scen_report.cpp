@@ -87,7 +87,7 @@ nlohmann::json scenJson(const ScenResult& result, const ScenOptions& options, co
           {"options",
            {{"every", options.every}, {"map_dir", options.map_dir}, {"seeds", options.seeds}, {"budget_s", options.budget_s}}},
           {"mismatch_tolerance", kScenMismatchTolerance},
-          {"parameters", eaci::report::parametersToJson(eaci::Parameters{})},
+          {"parameters", eaci::report::parametersToJson(options.parameters)},
           {"provenance", provenance},
           {"summary", summaryJson(result.summary)},
           {"length_bands", bandsJson(lengthBands(result.problems))},
@@ -128,8 +128,9 @@ std::string scenMarkdown(const ScenResult& result, const ScenOptions& options, c
   md << provenanceMarkdown(provenance) << "\n";
   md << (options.every == 1 ? std::string("Every problem") : "Every " + std::to_string(options.every) + "-th problem (1, " +
                                                               std::to_string(1 + options.every) + ", ...)")
-     << "; A* once, EACI (the project's "
-     << "defaults, corner cutting forbidden) with seeds 1.." << options.seeds << ", at most " << fixed(options.budget_s, 0)
+     << "; A* once, EACI ("
+     << (options.params_path.empty() ? std::string("the project's defaults") : "parameters of " + options.params_path)
+     << ", corner cutting forbidden) with seeds 1.." << options.seeds << ", at most " << fixed(options.budget_s, 0)
      << " s a run. Gap: EACI's length over the file's optimal length; a mismatch: |A* - optimal| > "
      << kScenMismatchTolerance << ".\n\n";
   MarkdownTable summary({"problems run", "A* mismatches", "EACI solved", "EACI optimal", "gap median", "gap mean",
