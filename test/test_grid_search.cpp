@@ -221,3 +221,53 @@ TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
   workspace.search(grid, request);
   EXPECT_DOUBLE_EQ(workspace.at(Cell{0, 0}), 1.0);
 }
+
+// The search that meets in the middle (geodesic islands' route on large maps): the cost of the
+// independent Dijkstra, a route of allowed moves that costs that much, and the same route on
+// one thread and on two. Maps up to 45 x 45 take one round; the 200 x 200 ones many.
+TEST(GridSearch, RouteThatMeetsInTheMiddleCostsWhatAnIndependentDijkstraSays) {
+  GridSearchWorkspace one_thread, two_threads;
+  int routes = 0;
+  for (std::uint32_t seed = 1; seed <= 70; ++seed) {
+    std::mt19937 rng(seed);
+    const int side = seed <= 64 ? 1 + static_cast<int>(rng() % 45) : 200;
+    const CostGrid grid = randomGrid(rng, side, 1 + static_cast<int>(rng() % static_cast<unsigned>(side)));
+    for (int k = 0; k < 3; ++k) {
+      const Cell source = randomCell(rng, grid);
+      const Cell target = k == 2 ? source : randomCell(rng, grid);
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", request " + std::to_string(k));
+      const double expected = grid.isFree(target) ? referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)] : kInf;
+      double cost = 0.0, cost_two = 0.0;
+      const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
+      const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
+      EXPECT_EQ(route, route_two);
+      EXPECT_EQ(cost, cost_two);
+      if (std::isinf(expected)) {
+        EXPECT_TRUE(route.empty());
+        EXPECT_TRUE(std::isinf(cost));
+        continue;
+      }
+      ++routes;
+      EXPECT_NEAR(cost, expected, tolerance(expected));
+      EXPECT_EQ(eaci::test::routeDefect(grid, route, source, target), "");
+      EXPECT_NEAR(eaci::routeCost(grid, route), expected, tolerance(expected));
+    }
+  }
+  EXPECT_GT(routes, 100);
+}
+
+// Its labels from the target share the workspace's 16-bit search numbers: after a wrap no old
+// label may join a route.
+TEST(GridSearch, RouteThatMeetsInTheMiddleForgetsOldLabelsWhenTheNumbersWrap) {
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 1, 0}}, false);
+  GridSearchWorkspace workspace;
+  ASSERT_EQ(workspace.cheapestRouteBetween(grid, Cell{0, 0}, Cell{0, 2}).size(), 3u);
+  GridSearchRequest request;
+  request.source = Cell{0, 3};  // blocked: reaches nothing
+  for (int k = 0; k < 65535; ++k) workspace.search(grid, request);
+  double cost = 0.0;
+  EXPECT_TRUE(workspace.cheapestRouteBetween(grid, Cell{0, 4}, Cell{0, 0}, 1, &cost).empty());
+  EXPECT_TRUE(std::isinf(cost));
+  EXPECT_EQ(workspace.cheapestRouteBetween(grid, Cell{0, 2}, Cell{0, 0}, 1, &cost).size(), 3u);
+  EXPECT_DOUBLE_EQ(cost, 2.0);
+}

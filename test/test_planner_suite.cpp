@@ -196,6 +196,37 @@ TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
   }
 }
 
+// From 256 x 256 cells geodesic EACI finds its route by the search that meets in the middle,
+// whose two sides run on two threads when it has them: the result is still the same on any
+// thread count, and as cheap as A*'s within the colony's early stop.
+TEST(PlannerDeterminism, LargeMapSameResultOnAnyThreadCount) {
+  CostGrid grid(300, 260, false);
+  for (int r = 0; r < grid.height(); ++r)
+    for (int c = 0; c < grid.width(); ++c) {
+      if (c % 60 == 30 && (r + c) % 130 > 12) grid.setBlocked(Cell{r, c}, true);  // walls with doors
+      else grid.setCost(Cell{r, c}, static_cast<std::uint8_t>((r * 7 + c * 13) % 90));
+    }
+  const Cell start{5, 3}, goal{250, 290};
+  eaci::Parameters p;
+  p.max_iterations = 10;
+  p.early_stop_iterations = 3;
+  p.stop_gap = 0.01;
+  p.threads = 1;
+  const auto one = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(one.success()) << one.error;
+  EXPECT_EQ(eaci::test::routeDefect(grid, one.path, start, goal), "");
+  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  EXPECT_GE(one.cost, optimum - 1e-9);
+  EXPECT_LE(one.cost, 1.03 * optimum);
+  for (int threads : {2, 0}) {
+    p.threads = threads;
+    const auto other = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+    EXPECT_EQ(one.path, other.path) << threads << " threads";
+    EXPECT_EQ(one.islands, other.islands) << threads << " threads";
+    EXPECT_EQ(one.lost_ants_per_iteration, other.lost_ants_per_iteration) << threads << " threads";
+  }
+}
+
 TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
   // Never allocated: the check runs on the dimensions. Only colonies that keep pheromone on
   // the whole map are capped: classic ACO, the paper's islands and region_margin 0 (geodesic

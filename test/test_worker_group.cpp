@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "eaci/aco/worker_group.hpp"
+#include "eaci/parallel/worker_group.hpp"
 
 TEST(PlannerThreads, WorkerGroupRunsEveryWorkerOncePerRunOnKeptThreads) {
   eaci::WorkerGroup group(3);

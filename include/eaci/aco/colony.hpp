@@ -15,7 +15,7 @@
 #include "eaci/aco/ant_walk.hpp"
 #include "eaci/aco/parameters.hpp"
 #include "eaci/aco/pheromone_update.hpp"
-#include "eaci/aco/worker_group.hpp"
+#include "eaci/parallel/worker_group.hpp"
 
 namespace eaci {
 

@@ -33,6 +33,13 @@ struct IslandPlan {
   CellPath route;                              // geodesic: the cheapest route S .. E the islands are on
 };
 
+// Geodesic islands find their route with the search that meets in the middle
+// (GridSearchWorkspace::cheapestRouteBetween) on maps of at least this many cells (256 x 256):
+// its two sides run at the same time with threads != 1, where one A* cannot use a second core.
+// On smaller maps one A* takes a millisecond or two, and the paper's maps keep the routes,
+// and so the tables, they had (of equally short routes the two searches may pick different ones).
+constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
+
 // Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
 // kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route
 // (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
@@ -44,7 +51,11 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
     return {paperIslands(auxiliaryMap(grid, start, goal), reachableFrom(grid, start), start, goal, params.islands), {}, {}};
   IslandPlan plan;
   GridSearchWorkspace own_workspace;
-  plan.route = shortestPath(grid, start, goal, workspace ? *workspace : own_workspace).path;
+  GridSearchWorkspace& search = workspace ? *workspace : own_workspace;
+  if (grid.cellCount() >= kTwoSidedSearchCells)
+    plan.route = search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads));
+  else
+    plan.route = shortestPath(grid, start, goal, search).path;
   if (plan.route.empty()) return plan;
   plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
                                       start, goal, params.islands, params.island_spacing_max);

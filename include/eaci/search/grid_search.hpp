@@ -30,6 +30,7 @@
 #include <optional>
 #include <vector>
 
+#include "eaci/parallel/worker_group.hpp"
 #include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {
@@ -149,6 +150,7 @@ class SearchHeap {
 
   void clear() { heap_.clear(); }
   bool empty() const { return heap_.empty(); }
+  const Item& front() const { return heap_.front(); }  // not empty
   void push(const Item& item) {
     std::size_t i = heap_.size();
     heap_.push_back(item);
@@ -241,6 +243,16 @@ class SearchQueue {
       refill(stale);
     }
     next = SearchHeap::entryOf(heap_.pop());
+    return true;
+  }
+  // The entry pop() would give next, left in the queue; false when there is none.
+  template <class Stale>
+  bool peek(SearchEntry& next, const Stale& stale) {
+    while (heap_.empty()) {
+      if (outside_heap_ == 0) return false;
+      refill(stale);
+    }
+    next = SearchHeap::entryOf(heap_.front());
     return true;
   }
 
@@ -409,6 +421,49 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
   return largest_distance;
 }
 
+// One side of a search that meets in the middle (GridSearchWorkspace::cheapestRouteBetween):
+// the search from the source (`forward`) or from the target over the reversed moves. Its cells
+// settle in order of route cost plus a potential, half the difference of the octile distances
+// to the far end and to the near end, which keeps every move's reduced cost >= 0 on both sides
+// alike, so each side is a Dijkstra search on the same reduced costs.
+template <class Labels>
+struct MeetingSide {
+  Labels labels;
+  SearchQueue* open;
+  std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
+  Cell near_end, far_end;
+  bool forward;
+  double span;  // octile distance between the ends: keeps the priorities >= 0
+
+  double priority(Cell c, double g) const {
+    return g + 0.5 * (octileDistance(c, far_end) - octileDistance(c, near_end) + span);
+  }
+  bool stale(const SearchEntry& e) const { return e.cost > labels.distance(e.slot); }
+
+  // Settles up to `cells` cells; labels only its own slots, reads nothing of the other side.
+  void round(const CostGrid& grid, const CellWindow& window, const SearchNeighbourhood& around, int cells) {
+    touched->clear();
+    const auto is_stale = [this](const SearchEntry& e) { return stale(e); };
+    SearchEntry top;
+    for (int n = 0; n < cells && open->pop(top, is_stale); ++n) {
+      if (stale(top)) continue;
+      const Cell here = window.cellAt(top.slot);
+      const std::size_t index = grid.index(here);
+      for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
+        const int d = lowestBit(moves);
+        const std::uint32_t j = around.slotTowards(top.slot, d);
+        // Forward a move costs by the cell it enters; backward by the cell it leaves (the real
+        // move goes from j to here).
+        const double g = top.cost + grid.moveCostInto(forward ? around.indexTowards(index, d) : index, d);
+        if (g >= labels.distance(j)) continue;
+        labels.label(j, g, static_cast<std::uint8_t>(d));
+        touched->push_back(j);
+        open->push({priority(step(here, d), g), g, j});
+      }
+    }
+  }
+};
+
 // Labels in the result's own arrays (filled with +infinity first).
 struct ResultLabels {
   double* distances;
@@ -448,6 +503,87 @@ class GridSearchWorkspace {
     prepare(window_.size());
     Labels labels = currentLabels();
     largest_distance_ = detail::runGridSearch(grid, request, window_, labels, open_, frontier_);
+  }
+
+  // A cheapest route from `source` to `target` (both free) by two searches that meet in the
+  // middle (detail::MeetingSide), the same cost as A*'s route (of several equally cheap routes
+  // it may return another). The two sides take turns in rounds of kMeetingRound cells, each on
+  // its own labels; between rounds the cells either side labelled are checked against the
+  // other's labels (every pair offers a route, the cheapest so far is mu), and the search ends
+  // once the two sides' next priorities add up to mu + octile(source, target): no cheaper
+  // route is left. With `threads` >= 2 the two sides of a round run at the same time, on a
+  // thread kept with the workspace; the rounds, and so the route, are the same on one thread.
+  // Empty when the target cannot be reached. at() and routeTo() do not answer for it.
+  CellPath cheapestRouteBetween(const CostGrid& grid, Cell source, Cell target, int threads = 1,
+                                double* cost = nullptr) {
+    window_ = CellWindow::whole(grid);
+    prepare(window_.size());
+    if (backward_capacity_ < window_.size()) {
+      backward_generations_.reset();
+      backward_distances_.reset();
+      backward_moves_.reset();
+      backward_generations_.reset(new std::uint16_t[window_.size()]());
+      backward_distances_.reset(new double[window_.size()]);
+      backward_moves_.reset(new std::uint8_t[window_.size()]);
+      backward_capacity_ = window_.size();
+    }
+    const double span = octileDistance(source, target);
+    detail::MeetingSide<Labels> sides[2] = {
+        {currentLabels(), &open_, &touched_[0].cells, source, target, true, span},
+        {Labels{backward_distances_.get(), backward_moves_.get(), backward_generations_.get(), generation_},
+         &backward_open_, &touched_[1].cells, target, source, false, span}};
+    CellPath route;
+    if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
+    if (!grid.isFree(source) || !grid.isFree(target)) return route;
+    for (int side = 0; side < 2; ++side) {
+      const Cell end = side == 0 ? source : target;
+      const auto slot = static_cast<std::uint32_t>(window_.slot(end));
+      sides[side].labels.label(slot, 0.0, GridSearchResult::kNoMove);
+      sides[side].open->clear();
+      sides[side].open->push({sides[side].priority(end, 0.0), 0.0, slot});
+    }
+    const detail::SearchNeighbourhood around(grid, window_);
+    if (threads >= 2 && !meeting_workers_) meeting_workers_ = std::make_unique<WorkerGroup>(2);
+    double mu = source == target ? 0.0 : std::numeric_limits<double>::infinity();
+    std::uint32_t meeting = static_cast<std::uint32_t>(window_.slot(source));
+    for (;;) {
+      detail::SearchEntry next[2];
+      const bool open_forward = sides[0].open->peek(next[0], [&](const detail::SearchEntry& e) { return sides[0].stale(e); });
+      const bool open_backward = sides[1].open->peek(next[1], [&](const detail::SearchEntry& e) { return sides[1].stale(e); });
+      if (!open_forward || !open_backward) break;  // one side has settled all it can reach
+      if (next[0].priority + next[1].priority >= mu + span) break;
+      const auto run_side = [&](int side) { sides[side].round(grid, window_, around, kMeetingRound); };
+      if (threads >= 2) {
+        meeting_workers_->run(run_side);
+      } else {
+        run_side(0);
+        run_side(1);
+      }
+      for (int side = 0; side < 2; ++side)
+        for (std::uint32_t j : touched_[side].cells) {
+          const double through = sides[0].labels.distance(j) + sides[1].labels.distance(j);
+          if (through < mu) {
+            mu = through;
+            meeting = j;
+          }
+        }
+    }
+    if (cost != nullptr) *cost = mu;
+    if (!std::isfinite(mu)) return route;
+    for (Cell c = window_.cellAt(meeting);;) {  // back from the meeting cell to the source
+      route.push_back(c);
+      const std::uint8_t d = moves_[window_.slot(c)];
+      if (d == GridSearchResult::kNoMove) break;
+      c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
+    }
+    std::reverse(route.begin(), route.end());
+    for (Cell c = window_.cellAt(meeting);;) {  // on from the meeting cell to the target
+      const std::uint8_t d = backward_moves_[window_.slot(c)];
+      if (d == GridSearchResult::kNoMove) break;
+      c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
+      route.push_back(c);
+    }
+    return route;
   }
 
   const CellWindow& window() const { return window_; }
@@ -498,6 +634,10 @@ class GridSearchWorkspace {
     if (slots > capacity_) {
       generations_.reset();  // the old buffers go first
       distances_.reset();
+      backward_generations_.reset();  // the backward labels follow the new numbering too
+      backward_distances_.reset();
+      backward_moves_.reset();
+      backward_capacity_ = 0;
       moves_.reset();
       generations_.reset(new std::uint16_t[slots]());
       distances_.reset(new double[slots]);
@@ -507,6 +647,7 @@ class GridSearchWorkspace {
     }
     if (++generation_ == 0) {  // the numbers wrapped round: forget every label
       std::fill(generations_.get(), generations_.get() + capacity_, std::uint16_t{0});
+      std::fill(backward_generations_.get(), backward_generations_.get() + backward_capacity_, std::uint16_t{0});
       generation_ = 1;
     }
   }
@@ -516,9 +657,23 @@ class GridSearchWorkspace {
   std::unique_ptr<std::uint16_t[]> generations_;
   std::size_t capacity_ = 0;
   std::uint16_t generation_ = 0;
+  // cheapestRouteBetween: the labels of the side that starts at the target, both sides' queues
+  // and round lists, and the thread of the second side.
+  static constexpr int kMeetingRound = 2048;
+  std::unique_ptr<double[]> backward_distances_;
+  std::unique_ptr<std::uint8_t[]> backward_moves_;
+  std::unique_ptr<std::uint16_t[]> backward_generations_;
+  std::size_t backward_capacity_ = 0;
+  // What the two sides write during a round sits on cache lines of its own.
+  alignas(64) detail::SearchQueue backward_open_;
+  struct alignas(64) RoundCells {
+    std::vector<std::uint32_t> cells;
+  };
+  RoundCells touched_[2];
+  std::unique_ptr<WorkerGroup> meeting_workers_;
   CellWindow window_;
   double largest_distance_ = 0.0;
-  detail::SearchQueue open_;
+  alignas(64) detail::SearchQueue open_;
   std::vector<std::uint32_t> frontier_;
 };
 

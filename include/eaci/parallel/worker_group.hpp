@@ -1,5 +1,6 @@
 // A fixed set of threads, started once, that run the same job on demand: the colony walks
-// each iteration's ants on it instead of starting threads every iteration.
+// each iteration's ants on it instead of starting threads every iteration, and the search that
+// meets in the middle runs its two sides on it, round by round.
 #pragma once
 
 #include <condition_variable>
