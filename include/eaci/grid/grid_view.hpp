@@ -70,6 +70,12 @@ class GridView {
                  static_cast<std::size_t>(c.col)];
   }
 
+  // The bytes of map row `row` (0 = top), width() of them, whatever the buffer order.
+  const std::uint8_t* rowBytes(int row) const {
+    const int buffer_row = order_ == RowOrder::kTopFirst ? row : height_ - 1 - row;
+    return data_ + static_cast<std::size_t>(buffer_row) * static_cast<std::size_t>(width_);
+  }
+
   bool isObstacle(Cell c) const { return interpretation_.isObstacle(value(c)); }
   // The cost 0..254 of a free cell (see CellInterpretation).
   std::uint8_t cost(Cell c) const { return interpretation_.cost(value(c)); }
