@@ -170,7 +170,9 @@ INSTANTIATE_TEST_SUITE_P(AllPlanners, PlannerSuite,
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
-  const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
+  // 40 x 40: colonies on fewer than kCellsForWorkers cells walk on one thread whatever asked.
+  const CostGrid grid = eaci::test::paperMap("paper-40x40.txt", true);
+  static_assert(40 * 40 >= eaci::kCellsForWorkers, "the colony must use the threads it is given");
   for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco}) {
     eaci::Parameters p;
     p.island_strategy = eaci::IslandStrategy::kPaper;  // more lost ants: differences would show
@@ -178,20 +180,20 @@ TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
     p.max_iterations = 30;
     p.seed = 7;
     p.threads = 1;
-    const auto one = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    const auto one = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
     p.threads = 2;
-    const auto two = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    const auto two = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
     p.threads = 3;
-    const auto three = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    const auto three = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
     p.threads = 1;
-    const auto again = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    const auto again = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
     for (const auto* other : {&two, &three, &again}) {
       EXPECT_EQ(one.path, other->path);
       EXPECT_EQ(one.lost_ants_per_iteration, other->lost_ants_per_iteration);
       EXPECT_EQ(one.iteration_best_length, other->iteration_best_length);
     }
     p.seed = 8;
-    const auto other_seed = eaci::plan(grid, Cell{29, 0}, Cell{0, 29}, algorithm, p);
+    const auto other_seed = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
     EXPECT_NE(one.lost_ants_per_iteration, other_seed.lost_ants_per_iteration);
   }
 }

@@ -48,6 +48,15 @@ inline int resolveThreadCount(int requested) {
   return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
+// The threads a colony walks its ants on: params.threads (0 = all cores), at most one per ant,
+// and one alone on a region of fewer than kCellsForWorkers cells, whose walks are too short to
+// pay for waking another thread (the result is the same on any number).
+constexpr std::size_t kCellsForWorkers = 1024;
+inline int colonyWorkers(const Parameters& params, std::size_t region_cells) {
+  if (region_cells < kCellsForWorkers) return 1;
+  return std::min(resolveThreadCount(params.threads), params.ants);
+}
+
 class Colony {
  public:
   // `cheapest_cost`: the cost of a cheapest route through the waypoints when known (geodesic
@@ -59,7 +68,7 @@ class Colony {
                               ? cheapest_cost * (1.0 + params.stop_gap) + 1e-9 * std::max(1.0, cheapest_cost)
                               : -std::numeric_limits<double>::infinity()),
         routes_(static_cast<std::size_t>(params.ants)),
-        worker_state_(static_cast<std::size_t>(std::min(resolveThreadCount(params.threads), params.ants))),
+        worker_state_(static_cast<std::size_t>(colonyWorkers(params, setup.region.size()))),
         workers_(static_cast<int>(worker_state_.size())) {}
 
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {

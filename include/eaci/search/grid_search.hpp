@@ -511,8 +511,9 @@ class GridSearchWorkspace {
   // its own labels; between rounds the cells either side labelled are checked against the
   // other's labels (every pair offers a route, the cheapest so far is mu), and the search ends
   // once the two sides' next priorities add up to mu + octile(source, target): no cheaper
-  // route is left. With `threads` >= 2 the two sides of a round run at the same time, on a
-  // thread kept with the workspace; the rounds, and so the route, are the same on one thread.
+  // route is left. With `threads` >= 2 the two sides of every round after the first run at the
+  // same time, on a thread kept with the workspace; the rounds, and so the route, are the same
+  // on one thread.
   // Empty when the target cannot be reached. at() and routeTo() do not answer for it.
   CellPath cheapestRouteBetween(const CostGrid& grid, Cell source, Cell target, int threads = 1,
                                 double* cost = nullptr) {
@@ -543,9 +544,9 @@ class GridSearchWorkspace {
       sides[side].open->push({sides[side].priority(end, 0.0), 0.0, slot});
     }
     const detail::SearchNeighbourhood around(grid, window_);
-    if (threads >= 2 && !meeting_workers_) meeting_workers_ = std::make_unique<WorkerGroup>(2);
     double mu = source == target ? 0.0 : std::numeric_limits<double>::infinity();
     std::uint32_t meeting = static_cast<std::uint32_t>(window_.slot(source));
+    int rounds = 0;
     for (;;) {
       detail::SearchEntry next[2];
       const bool open_forward = sides[0].open->peek(next[0], [&](const detail::SearchEntry& e) { return sides[0].stale(e); });
@@ -553,7 +554,9 @@ class GridSearchWorkspace {
       if (!open_forward || !open_backward) break;  // one side has settled all it can reach
       if (next[0].priority + next[1].priority >= mu + span) break;
       const auto run_side = [&](int side) { sides[side].round(grid, window_, around, kMeetingRound); };
-      if (threads >= 2) {
+      // The first round on this thread: a short route is found in it, without waking another.
+      if (threads >= 2 && ++rounds > 1) {
+        if (!meeting_workers_) meeting_workers_ = std::make_unique<WorkerGroup>(2);
         meeting_workers_->run(run_side);
       } else {
         run_side(0);
