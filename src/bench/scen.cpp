@@ -120,11 +120,12 @@ class ScenRunner {
     const eaci::OccupancyMap& m = map(r.map_path);
     checkProblem(options_, p, m, r.map_path);
     eaci::Parameters params = options_.parameters;  // the defaults or --params; corner cutting forbidden
-    r.astar = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, params, 0.0});
+    // Each planner keeps its search buffers from plan to plan, as a robot's planner would.
+    r.astar = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, params, 0.0, &astar_workspace_});
     for (int seed = 1; seed <= options_.seeds; ++seed) {
       params.seed = static_cast<std::uint64_t>(seed);
       r.eaci.push_back(timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kEaci, params,
-                                             options_.budget_s * 1000.0}));
+                                             options_.budget_s * 1000.0, &eaci_workspace_}));
     }
     summarizeProblem(r);
     return r;
@@ -138,6 +139,7 @@ class ScenRunner {
 
   const ScenOptions& options_;
   Progress progress_;
+  eaci::GridSearchWorkspace astar_workspace_, eaci_workspace_;
   std::map<std::string, eaci::OccupancyMap> maps_;
 };
 

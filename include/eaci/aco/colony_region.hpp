@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/search/grid_search.hpp"
 
 namespace eaci {
 
@@ -45,16 +46,20 @@ class ColonyRegion {
   static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin) {
     ColonyRegion region;
     region.grid_cells_ = grid.cellCount();
-    region.region_of_grid_.assign(grid.cellCount(), kNone);
+    region.grid_width_ = grid.width();
+    // Every region cell lies within `margin` of the route's bounding box: the map-to-region
+    // numbering covers that box only, so a short route costs no pass over the whole map.
+    if (!route.empty()) region.bounds_ = CellWindow::around(grid, route, margin);
+    region.region_of_slot_.assign(region.bounds_.size(), kNone);
+    const auto mark = [&region](Cell c) -> std::uint32_t& { return region.region_of_slot_[region.bounds_.slot(c)]; };
     // Breadth first from the route, one ring of moves at a time; marks cells with 0 on entry.
     std::vector<std::uint32_t> ring;
     for (const Cell& c : route) {
       if (!grid.isFree(c)) continue;
-      const auto i = static_cast<std::uint32_t>(grid.index(c));
-      if (region.region_of_grid_[i] == kNone) {
-        region.region_of_grid_[i] = 0;
-        region.grid_index_.push_back(i);
-        ring.push_back(i);
+      if (mark(c) == kNone) {
+        mark(c) = 0;
+        region.grid_index_.push_back(static_cast<std::uint32_t>(grid.index(c)));
+        ring.push_back(static_cast<std::uint32_t>(grid.index(c)));
       }
     }
     std::vector<std::uint32_t> next_ring;
@@ -64,9 +69,10 @@ class ColonyRegion {
         const Cell here = grid.cellAt(i);
         for (int d = 0; d < kDirections; ++d) {
           if (!grid.canMove(here, d)) continue;
-          const auto j = static_cast<std::uint32_t>(grid.index(step(here, d)));
-          if (region.region_of_grid_[j] != kNone) continue;
-          region.region_of_grid_[j] = 0;
+          const Cell next = step(here, d);
+          if (mark(next) != kNone) continue;
+          mark(next) = 0;
+          const auto j = static_cast<std::uint32_t>(grid.index(next));
           region.grid_index_.push_back(j);
           next_ring.push_back(j);
         }
@@ -75,15 +81,15 @@ class ColonyRegion {
     }
     std::sort(region.grid_index_.begin(), region.grid_index_.end());
     region.size_ = region.grid_index_.size();
-    for (std::size_t r = 0; r < region.size_; ++r)
-      region.region_of_grid_[region.grid_index_[r]] = static_cast<std::uint32_t>(r);
+    for (std::size_t r = 0; r < region.size_; ++r) mark(grid.cellAt(region.grid_index_[r])) = static_cast<std::uint32_t>(r);
     region.neighbours_.assign(region.size_ * kDirections, kNone);
     region.moves_.assign(region.size_, 0);
     for (std::size_t r = 0; r < region.size_; ++r) {
       const Cell here = grid.cellAt(region.grid_index_[r]);
       for (int d = 0; d < kDirections; ++d) {
         if (!grid.canMove(here, d)) continue;
-        const std::uint32_t n = region.region_of_grid_[grid.index(step(here, d))];
+        const Cell next = step(here, d);
+        const std::uint32_t n = region.bounds_.contains(next) ? mark(next) : kNone;
         region.neighbours_[r * kDirections + d] = n;
         if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
       }
@@ -99,7 +105,10 @@ class ColonyRegion {
   std::uint32_t gridIndex(std::uint32_t r) const { return whole_map_ ? r : grid_index_[r]; }
   // Region number of a grid cell, kNone outside the region.
   std::uint32_t regionIndex(std::size_t grid_index) const {
-    return whole_map_ ? static_cast<std::uint32_t>(grid_index) : region_of_grid_[grid_index];
+    if (whole_map_) return static_cast<std::uint32_t>(grid_index);
+    const auto width = static_cast<std::size_t>(grid_width_);
+    const Cell c{static_cast<int>(grid_index / width), static_cast<int>(grid_index % width)};
+    return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
   }
   bool contains(std::size_t grid_index) const { return regionIndex(grid_index) != kNone; }
 
@@ -122,9 +131,12 @@ class ColonyRegion {
   std::vector<std::uint8_t> moves_;  // per region cell: bit d when the move in direction d is allowed and stays inside
   // Whole map: the index step of each move.
   std::array<std::ptrdiff_t, kDirections> index_step_{};
-  // Around a route: grid index per region cell, region number per grid cell, neighbours.
+  // Around a route: grid index per region cell, region number per cell of `bounds_` (the
+  // route's bounding box grown by the margin), neighbours.
   std::vector<std::uint32_t> grid_index_;
-  std::vector<std::uint32_t> region_of_grid_;
+  int grid_width_ = 0;
+  CellWindow bounds_;
+  std::vector<std::uint32_t> region_of_slot_;
   std::vector<std::uint32_t> neighbours_;  // [r * kDirections + d]
 };
 

@@ -507,11 +507,11 @@ class GridSearchWorkspace {
 
   // A cheapest route from `source` to `target` (both free) by two searches that meet in the
   // middle (detail::MeetingSide), the same cost as A*'s route (of several equally cheap routes
-  // it may return another). The two sides take turns in rounds of kMeetingRound cells, each on
-  // its own labels; between rounds the cells either side labelled are checked against the
+  // it may return another). The two sides take turns in rounds of 16, 32, ... up to
+  // kMeetingRound cells, each on its own labels; between rounds the cells either side labelled are checked against the
   // other's labels (every pair offers a route, the cheapest so far is mu), and the search ends
   // once the two sides' next priorities add up to mu + octile(source, target): no cheaper
-  // route is left. With `threads` >= 2 the two sides of every round after the first run at the
+  // route is left. With `threads` >= 2 the two sides of each full-size round run at the
   // same time, on a thread kept with the workspace; the rounds, and so the route, are the same
   // on one thread.
   // Empty when the target cannot be reached. at() and routeTo() do not answer for it.
@@ -553,9 +553,11 @@ class GridSearchWorkspace {
       const bool open_backward = sides[1].open->peek(next[1], [&](const detail::SearchEntry& e) { return sides[1].stale(e); });
       if (!open_forward || !open_backward) break;  // one side has settled all it can reach
       if (next[0].priority + next[1].priority >= mu + span) break;
-      const auto run_side = [&](int side) { sides[side].round(grid, window_, around, kMeetingRound); };
-      // The first round on this thread: a short route is found in it, without waking another.
-      if (threads >= 2 && ++rounds > 1) {
+      // Rounds grow from kFirstMeetingRound cells to kMeetingRound, so that a short route costs
+      // few cells more than the search needs; the small ones stay on this thread.
+      const int round_cells = std::min(kMeetingRound, kFirstMeetingRound << std::min(rounds++, 20));
+      const auto run_side = [&](int side) { sides[side].round(grid, window_, around, round_cells); };
+      if (threads >= 2 && round_cells == kMeetingRound) {
         if (!meeting_workers_) meeting_workers_ = std::make_unique<WorkerGroup>(2);
         meeting_workers_->run(run_side);
       } else {
@@ -662,6 +664,7 @@ class GridSearchWorkspace {
   std::uint16_t generation_ = 0;
   // cheapestRouteBetween: the labels of the side that starts at the target, both sides' queues
   // and round lists, and the thread of the second side.
+  static constexpr int kFirstMeetingRound = 16;
   static constexpr int kMeetingRound = 2048;
   std::unique_ptr<double[]> backward_distances_;
   std::unique_ptr<std::uint8_t[]> backward_moves_;
