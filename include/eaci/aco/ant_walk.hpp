@@ -116,7 +116,7 @@ struct WalkSetup {
         waypoint_of_cell(region.size(), -1), leg_distance(std::move(leg_distances)), heuristic(rule),
         eta_power(beta) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
-      waypoint_of_cell[region.regionIndex(g.index(waypoints[w]))] = static_cast<std::int32_t>(w);
+      waypoint_of_cell[region.regionIndex(waypoints[w])] = static_cast<std::int32_t>(w);
     if (rule == HeuristicRule::kTurningAware)
       for (int from = 0; from < kDirections; ++from)
         for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] = turningCost(from, to, epsilon);
@@ -178,7 +178,7 @@ class AntWalker {
     const ColonyRegion& region = setup.region;
     beginWalk(region.size());
     Cell here = setup.waypoints.front();
-    std::uint32_t current = region.regionIndex(grid.index(here));
+    std::uint32_t current = region.regionIndex(here);
     route.reset(current);
     visit(current);
     std::size_t target = 1;

@@ -29,6 +29,7 @@ class ColonyRegion {
     ColonyRegion region;
     region.whole_map_ = true;
     region.grid_cells_ = grid.cellCount();
+    region.grid_width_ = grid.width();
     region.size_ = grid.cellCount();
     for (int d = 0; d < kDirections; ++d)
       region.index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
@@ -108,6 +109,11 @@ class ColonyRegion {
     if (whole_map_) return static_cast<std::uint32_t>(grid_index);
     const auto width = static_cast<std::size_t>(grid_width_);
     const Cell c{static_cast<int>(grid_index / width), static_cast<int>(grid_index % width)};
+    return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
+  }
+  // The same for a cell of the grid.
+  std::uint32_t regionIndex(Cell c) const {
+    if (whole_map_) return static_cast<std::uint32_t>(static_cast<std::size_t>(c.row) * static_cast<std::size_t>(grid_width_) + static_cast<std::size_t>(c.col));
     return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
   }
   bool contains(std::size_t grid_index) const { return regionIndex(grid_index) != kNone; }

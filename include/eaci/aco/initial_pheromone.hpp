@@ -73,7 +73,7 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyR
             max_tau0 = std::max(max_tau0, value);
             min_tau0 = std::min(min_tau0, value);
           }
-          const std::uint32_t from_cell = cells.regionIndex(grid.index(from));
+          const std::uint32_t from_cell = cells.regionIndex(from);
           if (from_cell != ColonyRegion::kNone)
             region_value.emplace_back(std::size_t{from_cell} * kDirections + static_cast<std::size_t>(d), value);
         }
