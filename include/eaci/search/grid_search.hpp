@@ -238,11 +238,8 @@ class SearchQueue {
   // date (a cheaper label came since) may be dropped on the way: they would be skipped anyway.
   template <class Stale>
   bool pop(SearchEntry& next, const Stale& stale) {
-    while (heap_.empty()) {
-      if (outside_heap_ == 0) return false;
-      refill(stale);
-    }
-    next = SearchHeap::entryOf(heap_.pop());
+    if (!peek(next, stale)) return false;
+    heap_.pop();
     return true;
   }
   // The entry pop() would give next, left in the queue; false when there is none.
