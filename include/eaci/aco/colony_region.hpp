@@ -108,8 +108,7 @@ class ColonyRegion {
   std::uint32_t regionIndex(std::size_t grid_index) const {
     if (whole_map_) return static_cast<std::uint32_t>(grid_index);
     const auto width = static_cast<std::size_t>(grid_width_);
-    const Cell c{static_cast<int>(grid_index / width), static_cast<int>(grid_index % width)};
-    return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
+    return regionIndex(Cell{static_cast<int>(grid_index / width), static_cast<int>(grid_index % width)});
   }
   // The same for a cell of the grid.
   std::uint32_t regionIndex(Cell c) const {

@@ -31,6 +31,7 @@ struct IslandPlan {
   std::vector<Cell> islands;                   // L_1 = S, ..., L_N = E
   std::vector<LegDistanceField> leg_distance;  // empty: the paper's straight-line d_jg
   CellPath route;                              // geodesic: the cheapest route S .. E the islands are on
+  double route_cost = std::numeric_limits<double>::infinity();  // its cost (CostGrid::moveCost)
 };
 
 // Geodesic islands find their route with the search that meets in the middle
@@ -52,10 +53,13 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
   IslandPlan plan;
   GridSearchWorkspace own_workspace;
   GridSearchWorkspace& search = workspace ? *workspace : own_workspace;
-  if (grid.cellCount() >= kTwoSidedSearchCells)
-    plan.route = search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads));
-  else
-    plan.route = shortestPath(grid, start, goal, search).path;
+  if (grid.cellCount() >= kTwoSidedSearchCells) {
+    plan.route = search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost);
+  } else {
+    ShortestPath shortest = shortestPath(grid, start, goal, search);
+    plan.route = std::move(shortest.path);
+    plan.route_cost = shortest.cost;
+  }
   if (plan.route.empty()) return plan;
   plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
                                       start, goal, params.islands, params.island_spacing_max);
@@ -96,9 +100,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_distance));
   if (observer) observer(0, result.pheromone, setup.region);
-  const double cheapest_cost = result.search_route.empty() ? std::numeric_limits<double>::infinity()
-                                                           : routeCost(grid, result.search_route);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), cheapest_cost);
+  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), islands.route_cost);
   result.run = colony.run(should_stop, observer);
   result.region = std::move(setup.region);
   return result;

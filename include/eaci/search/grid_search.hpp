@@ -362,6 +362,24 @@ class SearchNeighbourhood {
 
 inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
 
+// Labels each cell one allowed move from the settled cell `here` (window slot `slot`, route
+// cost `cost`) that the move reaches more cheaply than its label says, and hands it to
+// on_label(slot, cell, cost). A move costs by the cell it enters; with `reverse_costs` by the
+// cell it leaves (the real move goes the other way: costs of routes *to* the source).
+template <class Labels, class OnLabel>
+void relaxMoves(const CostGrid& grid, const SearchNeighbourhood& around, std::uint32_t slot, Cell here, double cost,
+                bool reverse_costs, Labels& labels, const OnLabel& on_label) {
+  const std::size_t index = grid.index(here);
+  for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
+    const int d = lowestBit(moves);
+    const std::uint32_t j = around.slotTowards(slot, d);
+    const double g = cost + grid.moveCostInto(reverse_costs ? index : around.indexTowards(index, d), d);
+    if (g >= labels.distance(j)) continue;
+    labels.label(j, g, static_cast<std::uint8_t>(d));
+    on_label(j, step(here, d), g);
+  }
+}
+
 // The loop of every search, on labels kept by `Labels`: distance(slot) (+infinity when not
 // reached) and label(slot, distance, move). Returns the largest settled distance.
 template <class Labels>
@@ -403,17 +421,8 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
     if (stale(top)) continue;  // settled before, by a shorter way
     largest_distance = std::max(largest_distance, top.cost);
     if (top.slot == target_slot) break;
-    const Cell here = window.cellAt(top.slot);
-    const std::size_t index = grid.index(here);
-    for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
-      const int d = lowestBit(moves);
-      const std::uint32_t j = around.slotTowards(top.slot, d);
-      const double g =
-          top.cost + grid.moveCostInto(request.reverse_costs ? index : around.indexTowards(index, d), d);
-      if (g >= labels.distance(j)) continue;
-      labels.label(j, g, static_cast<std::uint8_t>(d));
-      open.push({steer ? g + octileDistance(step(here, d), target) : g, g, j});
-    }
+    relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, request.reverse_costs, labels,
+               [&](std::uint32_t j, Cell next, double g) { open.push({steer ? g + octileDistance(next, target) : g, g, j}); });
   }
   return largest_distance;
 }
@@ -444,19 +453,11 @@ struct MeetingSide {
     SearchEntry top;
     for (int n = 0; n < cells && open->pop(top, is_stale); ++n) {
       if (stale(top)) continue;
-      const Cell here = window.cellAt(top.slot);
-      const std::size_t index = grid.index(here);
-      for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
-        const int d = lowestBit(moves);
-        const std::uint32_t j = around.slotTowards(top.slot, d);
-        // Forward a move costs by the cell it enters; backward by the cell it leaves (the real
-        // move goes from j to here).
-        const double g = top.cost + grid.moveCostInto(forward ? around.indexTowards(index, d) : index, d);
-        if (g >= labels.distance(j)) continue;
-        labels.label(j, g, static_cast<std::uint8_t>(d));
-        touched->push_back(j);
-        open->push({priority(step(here, d), g), g, j});
-      }
+      relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, !forward, labels,
+                 [this](std::uint32_t j, Cell next, double g) {
+                   touched->push_back(j);
+                   open->push({priority(next, g), g, j});
+                 });
     }
   }
 };
@@ -505,8 +506,9 @@ class GridSearchWorkspace {
   // A cheapest route from `source` to `target` (both free) by two searches that meet in the
   // middle (detail::MeetingSide), the same cost as A*'s route (of several equally cheap routes
   // it may return another). The two sides take turns in rounds of 16, 32, ... up to
-  // kMeetingRound cells, each on its own labels; between rounds the cells either side labelled are checked against the
-  // other's labels (every pair offers a route, the cheapest so far is mu), and the search ends
+  // kMeetingRound cells, each on its own labels; between rounds the cells either side labelled
+  // are checked against the other's labels (every pair offers a route, the cheapest so far is
+  // mu), and the search ends
   // once the two sides' next priorities add up to mu + octile(source, target): no cheaper
   // route is left. With `threads` >= 2 the two sides of each full-size round run at the
   // same time, on a thread kept with the workspace; the rounds, and so the route, are the same
@@ -516,20 +518,11 @@ class GridSearchWorkspace {
                                 double* cost = nullptr) {
     window_ = CellWindow::whole(grid);
     prepare(window_.size());
-    if (backward_capacity_ < window_.size()) {
-      backward_generations_.reset();
-      backward_distances_.reset();
-      backward_moves_.reset();
-      backward_generations_.reset(new std::uint16_t[window_.size()]());
-      backward_distances_.reset(new double[window_.size()]);
-      backward_moves_.reset(new std::uint8_t[window_.size()]);
-      backward_capacity_ = window_.size();
-    }
+    if (backward_.capacity < window_.size()) backward_.allocate(window_.size());
     const double span = octileDistance(source, target);
     detail::MeetingSide<Labels> sides[2] = {
         {currentLabels(), &open_, &touched_[0].cells, source, target, true, span},
-        {Labels{backward_distances_.get(), backward_moves_.get(), backward_generations_.get(), generation_},
-         &backward_open_, &touched_[1].cells, target, source, false, span}};
+        {backward_.of(generation_), &backward_open_, &touched_[1].cells, target, source, false, span}};
     CellPath route;
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
     if (!grid.isFree(source) || !grid.isFree(target)) return route;
@@ -572,15 +565,9 @@ class GridSearchWorkspace {
     }
     if (cost != nullptr) *cost = mu;
     if (!std::isfinite(mu)) return route;
-    for (Cell c = window_.cellAt(meeting);;) {  // back from the meeting cell to the source
-      route.push_back(c);
-      const std::uint8_t d = moves_[window_.slot(c)];
-      if (d == GridSearchResult::kNoMove) break;
-      c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
-    }
-    std::reverse(route.begin(), route.end());
+    route = routeTo(window_.cellAt(meeting));  // from the source to the meeting cell
     for (Cell c = window_.cellAt(meeting);;) {  // on from the meeting cell to the target
-      const std::uint8_t d = backward_moves_[window_.slot(c)];
+      const std::uint8_t d = backward_.moves[window_.slot(c)];
       if (d == GridSearchResult::kNoMove) break;
       c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
       route.push_back(c);
@@ -602,7 +589,7 @@ class GridSearchWorkspace {
     if (!reached(c)) return route;
     for (;;) {
       route.push_back(c);
-      const std::uint8_t d = moves_[window_.slot(c)];
+      const std::uint8_t d = forward_.moves[window_.slot(c)];
       if (d == GridSearchResult::kNoMove) break;
       c = Cell{c.row - kDirRow[d], c.col - kDirCol[d]};
     }
@@ -627,46 +614,52 @@ class GridSearchWorkspace {
       generations[slot] = generation;
     }
   };
-  Labels currentLabels() const { return Labels{distances_.get(), moves_.get(), generations_.get(), generation_}; }
+  // One set of label arrays, kept from search to search.
+  struct LabelArrays {
+    std::unique_ptr<double[]> distances;
+    std::unique_ptr<std::uint8_t[]> moves;
+    std::unique_ptr<std::uint16_t[]> generations;
+    std::size_t capacity = 0;
+
+    void allocate(std::size_t slots) {  // every label of generation 0: no search's
+      generations.reset();  // the old buffers go first
+      distances.reset();
+      moves.reset();
+      generations.reset(new std::uint16_t[slots]());
+      distances.reset(new double[slots]);
+      moves.reset(new std::uint8_t[slots]);
+      capacity = slots;
+    }
+    void forgetAll() { std::fill(generations.get(), generations.get() + capacity, std::uint16_t{0}); }
+    Labels of(std::uint16_t generation) const {
+      return Labels{distances.get(), moves.get(), generations.get(), generation};
+    }
+  };
+  Labels currentLabels() const { return forward_.of(generation_); }
 
   // Room for `slots` labels, none of them this search's. Only the generations are ever cleared
   // (2 bytes a slot, once per 65 535 searches); distances and moves are read only where the
   // generation says they were written.
   void prepare(std::size_t slots) {
-    if (slots > capacity_) {
-      generations_.reset();  // the old buffers go first
-      distances_.reset();
-      backward_generations_.reset();  // the backward labels follow the new numbering too
-      backward_distances_.reset();
-      backward_moves_.reset();
-      backward_capacity_ = 0;
-      moves_.reset();
-      generations_.reset(new std::uint16_t[slots]());
-      distances_.reset(new double[slots]);
-      moves_.reset(new std::uint8_t[slots]);
-      capacity_ = slots;
+    if (slots > forward_.capacity) {
+      backward_ = LabelArrays{};  // numbered afresh below: the backward labels go too
+      forward_.allocate(slots);
       generation_ = 0;
     }
     if (++generation_ == 0) {  // the numbers wrapped round: forget every label
-      std::fill(generations_.get(), generations_.get() + capacity_, std::uint16_t{0});
-      std::fill(backward_generations_.get(), backward_generations_.get() + backward_capacity_, std::uint16_t{0});
+      forward_.forgetAll();
+      backward_.forgetAll();
       generation_ = 1;
     }
   }
 
-  std::unique_ptr<double[]> distances_;
-  std::unique_ptr<std::uint8_t[]> moves_;
-  std::unique_ptr<std::uint16_t[]> generations_;
-  std::size_t capacity_ = 0;
+  LabelArrays forward_;
   std::uint16_t generation_ = 0;
   // cheapestRouteBetween: the labels of the side that starts at the target, both sides' queues
   // and round lists, and the thread of the second side.
   static constexpr int kFirstMeetingRound = 16;
   static constexpr int kMeetingRound = 2048;
-  std::unique_ptr<double[]> backward_distances_;
-  std::unique_ptr<std::uint8_t[]> backward_moves_;
-  std::unique_ptr<std::uint16_t[]> backward_generations_;
-  std::size_t backward_capacity_ = 0;
+  LabelArrays backward_;
   // What the two sides write during a round sits on cache lines of its own.
   alignas(64) detail::SearchQueue backward_open_;
   struct alignas(64) RoundCells {
