@@ -55,7 +55,7 @@ struct Parameters {
   // turns it on.
   bool smooth_path = false;
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
-  double island_spacing_max = 6.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
+  double island_spacing_max = 2.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
   // Geodesic islands: the ants walk on the cells at most this many moves from the cheapest
   // route (ColonyRegion), so memory and set-up follow the route, not the map; 0 = the whole
   // map. The paper's islands and classic ACO always use the whole map.
