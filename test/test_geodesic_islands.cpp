@@ -88,9 +88,12 @@ TEST(LegDistanceField, CellsOutsideTheWindowReadAsFarAway) {
   const CostGrid grid = emptyGrid(40, 40);
   const CellPath leg = {{20, 20}, {20, 21}, {20, 22}};
   const eaci::LegDistanceField field(grid, leg, Cell{20, 22});
-  // The window is the leg plus a margin of 4: (20, 30) lies outside it.
+  // The window is the leg plus a margin of kMinWindowMargin (1): (20, 30) lies outside it.
+  static_assert(eaci::LegDistanceField::kMinWindowMargin == 1, "the cells below assume a margin of 1");
   const double outside = field.at(Cell{20, 30});
-  EXPECT_GE(outside, 8.0);
-  EXPECT_GT(outside, field.at(Cell{20, 26}));  // the window's edge, 4 away
-  EXPECT_NEAR(field.at(Cell{20, 26}), 4.0, 1e-12);
+  EXPECT_GE(outside, 8.0);                     // at least the straight-line distance
+  EXPECT_GT(outside, field.at(Cell{20, 23}));  // the window's edge, 1 away
+  EXPECT_NEAR(field.at(Cell{20, 23}), 1.0, 1e-12);
+  EXPECT_NEAR(field.at(Cell{21, 23}), std::sqrt(2.0), 1e-12);  // the window's corner
+  EXPECT_GT(field.at(Cell{20, 24}), field.at(Cell{21, 23}));   // just outside reads costlier than any cell inside
 }

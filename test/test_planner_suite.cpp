@@ -325,6 +325,33 @@ TEST(PlannerLimits, StopGapEndsTheRunOnceTheRouteIsAsCheapAsAStars) {
   EXPECT_LT(r.iterations_run, p.max_iterations);
 }
 
+// With stop_gap in force an iteration ends after the first wave of 10 ants that brings a route
+// within the gap. In a corridor one cell wide every ant walks the only route, so the first
+// wave ends the run; without early stopping every iteration walks all m ants.
+TEST(PlannerLimits, StopGapEndsTheIterationAfterTheFirstWaveOfAnts) {
+  CostGrid grid(40, 3, false);  // 40 columns, 3 rows
+  for (int c = 0; c < 40; ++c) {
+    grid.setBlocked(Cell{0, c}, true);
+    grid.setBlocked(Cell{2, c}, true);
+  }
+  const Cell start{1, 0}, goal{1, 39};
+  eaci::Parameters p;
+  p.max_iterations = 3;
+  p.early_stop_iterations = 5;
+  p.stop_gap = 0.0;
+  const auto waved = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(waved.success()) << waved.error;
+  EXPECT_DOUBLE_EQ(waved.length, 39.0);
+  EXPECT_TRUE(waved.stopped_early);
+  EXPECT_EQ(waved.ants_per_iteration, std::vector<int>({10}));
+  EXPECT_EQ(waved.lost_ants_per_iteration, std::vector<int>({0}));
+  p.early_stop_iterations = 0;  // the paper's protocol: every ant of every iteration
+  const auto all = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
+  ASSERT_TRUE(all.success()) << all.error;
+  EXPECT_EQ(all.ants_per_iteration, std::vector<int>({50, 50, 50}));
+  EXPECT_EQ(all.path, waved.path);
+}
+
 TEST(PlannerLimits, StopGapAcceptsARouteWithinTheGapOnACostMap) {
   // A 40 x 40 room whose cells cost more towards a wall down the middle (a door at the bottom).
   CostGrid grid(40, 40, false);

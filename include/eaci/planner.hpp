@@ -82,6 +82,7 @@ struct PlanResult {
   // (A*) its islands sit on, so a robot always gets a route when one exists.
   bool route_from_search = false;
   long long lost_ants_total = 0;
+  std::vector<int> ants_per_iteration;  // m, fewer where stop_gap ended an iteration after a wave of ants
   std::vector<int> lost_ants_per_iteration;
   // The route quality L_k per iteration: the cost (the length on a binary map; the names are
   // the paper's, whose maps are binary).
@@ -126,6 +127,7 @@ inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, con
   r.iterations_to_converge = colony.run.best_iteration;
   r.stopped_early = colony.run.stopped_early;
   r.interrupted = colony.run.interrupted;
+  r.ants_per_iteration = colony.run.ants_per_iteration;
   r.lost_ants_per_iteration = colony.run.lost_ants_per_iteration;
   for (int lost : r.lost_ants_per_iteration) r.lost_ants_total += lost;
   r.iteration_best_length = colony.run.iteration_best_cost;

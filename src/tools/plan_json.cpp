@@ -84,6 +84,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["interrupted"] = r.interrupted;
   j["route_from_search"] = r.route_from_search;
   j["lost_ants_total"] = r.lost_ants_total;
+  j["ants_per_iteration"] = r.ants_per_iteration;
   j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
   j["best_length_per_iteration"] = finiteOrNull(r.iteration_best_length);
   j["best_length_so_far"] = finiteOrNull(r.best_length_so_far);

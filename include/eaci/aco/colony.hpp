@@ -31,7 +31,8 @@ struct ColonyRun {
   int iterations_run = 0;
   bool stopped_early = false;             // early_stop_iterations without improvement, or stop_gap reached
   bool interrupted = false;               // should_stop() said so
-  std::vector<int> lost_ants_per_iteration;
+  std::vector<int> ants_per_iteration;       // ants that walked: m, fewer where stop_gap ended the iteration
+  std::vector<int> lost_ants_per_iteration;  // of the ants that walked
   std::vector<double> iteration_best_cost;  // +infinity where no ant completed
   std::vector<double> best_cost_so_far;     // +infinity until a route is found
 };
@@ -79,8 +80,8 @@ class Colony {
         run.interrupted = true;
         break;
       }
-      walkAllAnts(iteration);
-      const bool improved = recordIteration(iteration, run);
+      const int walked = walkAnts(iteration);
+      const bool improved = recordIteration(iteration, walked, run);
       updatePheromone();
       if (observer) observer(iteration, field_, setup_.region);
       since_improvement = improved ? 0 : since_improvement + 1;
@@ -94,15 +95,41 @@ class Colony {
   }
 
  private:
-  // Ants of one iteration read the same pheromone and each has its own random stream and
-  // route slot, so which worker walks which ant cannot change the result.
-  void walkAllAnts(int iteration) {
+  // The ants of one iteration; returns how many walked. With stop_gap in force (early stopping
+  // on, the cheapest cost known) they walk in waves of kAntsPerWave, and the iteration ends
+  // after the first wave that brings a route within the gap: the run stops there, and the rest
+  // of the ants could not change that. Waves are fixed by ant index, not by thread, so the
+  // result is the same on any thread count. Ants that did not walk count as neither complete
+  // nor lost.
+  static constexpr int kAntsPerWave = 10;
+  int walkAnts(int iteration) {
     const int ants = params_.ants;
-    std::atomic<int> next_ant{0};
+    const bool stop_gap_in_force = params_.early_stop_iterations > 0 && std::isfinite(good_enough_cost_);
+    if (!stop_gap_in_force) {
+      walkAnts(iteration, 0, ants);
+      return ants;
+    }
+    for (int first = 0; first < ants; first += kAntsPerWave) {
+      const int last = std::min(ants, first + kAntsPerWave);
+      walkAnts(iteration, first, last);
+      for (int k = first; k < last; ++k) {
+        const AntRoute& route = routes_[static_cast<std::size_t>(k)];
+        if (!route.complete || route.cost > good_enough_cost_) continue;
+        for (int rest = last; rest < ants; ++rest) routes_[static_cast<std::size_t>(rest)].complete = false;
+        return last;
+      }
+    }
+    return ants;
+  }
+
+  // Ants first..last-1 of an iteration. They read the same pheromone and each has its own
+  // random stream and route slot, so which worker walks which ant cannot change the result.
+  void walkAnts(int iteration, int first, int last) {
+    std::atomic<int> next_ant{first};
     workers_.run([&](int worker) {
       AntWalker& walker = worker_state_[static_cast<std::size_t>(worker)].walker;
       AntRoute& scratch = worker_state_[static_cast<std::size_t>(worker)].scratch;
-      for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < ants;
+      for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < last;
            k = next_ant.fetch_add(1, std::memory_order_relaxed)) {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
         // Walk into the worker's own route, then swap it into the ant's slot: neighbouring
@@ -113,12 +140,13 @@ class Colony {
     });
   }
 
-  // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so far.
-  bool recordIteration(int iteration, ColonyRun& run) {
+  // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so
+  // far, over the first `walked` ants.
+  bool recordIteration(int iteration, int walked, ColonyRun& run) {
     constexpr double kTolerance = 1e-9;
     best_ = worst_ = -1;
     int lost = 0;
-    for (int k = 0; k < static_cast<int>(routes_.size()); ++k) {
+    for (int k = 0; k < walked; ++k) {
       const AntRoute& route = routes_[static_cast<std::size_t>(k)];
       if (!route.complete) {
         ++lost;
@@ -128,6 +156,7 @@ class Colony {
       if (worst_ < 0 || route.cost > routes_[static_cast<std::size_t>(worst_)].cost + kTolerance) worst_ = k;
     }
     run.iterations_run = iteration;
+    run.ants_per_iteration.push_back(walked);
     run.lost_ants_per_iteration.push_back(lost);
     bool improved = false;
     if (best_ >= 0) {

@@ -19,6 +19,12 @@ namespace eaci {
 // look better.
 class LegDistanceField {
  public:
+  // The window reaches this many cells beyond the leg, or half the leg's length if more. With
+  // islands 2 cells apart one cell is enough: an ant further off than that heads back anyway
+  // (the region's other cells read as costlier), and a field of one island costs ~20 cells
+  // instead of ~120 with 4 (512 maze: EACI/A* time 4.3x -> 2.9x at 512-1024 cells, same routes).
+  static constexpr int kMinWindowMargin = 1;
+
   LegDistanceField() = default;
 
   // `leg` is the part of the cheapest route from the previous island to `target`.
@@ -28,7 +34,7 @@ class LegDistanceField {
     GridSearchRequest request;
     request.source = target;
     request.reverse_costs = true;  // costs of routes to the island
-    request.window = CellWindow::around(grid, extent, std::max(4, static_cast<int>(leg.size()) / 2));
+    request.window = CellWindow::around(grid, extent, std::max(kMinWindowMargin, static_cast<int>(leg.size()) / 2));
     field_ = searchGrid(grid, request);
     outside_ = field_.largest_distance + 1.0;
   }
