@@ -12,6 +12,10 @@ Start move_base first (launch/move_base_demo.launch; see docs/ros.md), then:
     ... --map M.yaml --random 12 --seed 1
         random pairs of free cell centres at least --min-obstacle-distance (0.35 m) from every
         occupied cell and at least --min-separation (half the map's shorter side) apart.
+Several move_base nodes at once (launch/compare_planners.launch starts two on one map):
+    ... --nodes move_base,move_base_other --repeat 3 --save out/compare-{node}.json
+        each request goes to every node in turn, --repeat times (the time kept is the median),
+        so both planners see the same machine; one saved file per node.
 --save F.json keeps the requests, measurements and plans; comparing two saved runs of the same
 requests (no ROS needed):
     /usr/bin/python3 scripts/probe_make_plan.py --compare navfn.json eaci.json
@@ -149,29 +153,43 @@ def probe(args, image):
         start = tuple(float(v) for v in args.start.split(","))
         pairs = [(start, goal) for goal in LAB_GOALS]
     rospy.init_node("probe_make_plan", anonymous=True)
-    rospy.wait_for_service("/move_base/make_plan", args.wait)
-    make_plan = rospy.ServiceProxy("/move_base/make_plan", GetPlan)
-    planner = rospy.get_param("/move_base/base_global_planner", "?")
-    results = []
+    nodes = [n.strip().strip("/") for n in args.nodes.split(",") if n.strip()]
+    if len(nodes) > 1 and args.save and "{node}" not in args.save:
+        raise SystemExit("--save needs {node} in its name with several --nodes")
+    services, planners, results = {}, {}, {}
+    for node in nodes:
+        rospy.wait_for_service("/%s/make_plan" % node, args.wait)
+        services[node] = rospy.ServiceProxy("/%s/make_plan" % node, GetPlan)
+        planners[node] = rospy.get_param("/%s/base_global_planner" % node, "?")
+        results[node] = []
     for start, goal in pairs:
-        t0 = time.time()
-        plan = make_plan(start=pose(*start), goal=pose(*goal), tolerance=0.0).plan
-        r = {"start": list(start), "goal": list(goal), "ms": (time.time() - t0) * 1000,
-             "points": [(p.pose.position.x, p.pose.position.y) for p in plan.poses]}
-        r["poses"] = len(r["points"])
-        if r["poses"] >= 2:
-            r["length"], r["turn"] = turn_and_length(r["points"])
-            r["clearance"] = image.min_clearance(r["points"])
-        results.append(r)
-        print(describe(r), flush=True)
-    planned = [r for r in results if r["poses"] >= 2]
-    if planned:
-        print("%s: %d/%d planned; turn median %.0f deg, total %.0f deg; min clearance %.3f m; time median %.0f ms"
-              % (planner, len(planned), len(results), statistics.median(r["turn"] for r in planned),
-                 sum(r["turn"] for r in planned), min(r["clearance"] for r in planned),
-                 statistics.median(r["ms"] for r in results)))
-    if args.save:
-        json.dump({"map": args.map, "planner": planner, "results": results}, open(args.save, "w"))
+        times, plans = {node: [] for node in nodes}, {}
+        for _ in range(args.repeat):
+            for node in nodes:
+                t0 = time.time()
+                plans[node] = services[node](start=pose(*start), goal=pose(*goal), tolerance=0.0).plan
+                times[node].append((time.time() - t0) * 1000)
+        for node in nodes:
+            results[node].append({"start": list(start), "goal": list(goal), "ms": statistics.median(times[node]),
+                                  "ms_all": times[node],
+                                  "points": [(p.pose.position.x, p.pose.position.y) for p in plans[node].poses]})
+        for node in nodes:
+            r = results[node][-1]
+            r["poses"] = len(r["points"])
+            if r["poses"] >= 2:
+                r["length"], r["turn"] = turn_and_length(r["points"])
+                r["clearance"] = image.min_clearance(r["points"])
+            print(("%s: " % node if len(nodes) > 1 else "") + describe(r), flush=True)
+    for node in nodes:
+        planned = [r for r in results[node] if r["poses"] >= 2]
+        if planned:
+            print("%s: %d/%d planned; turn median %.0f deg, total %.0f deg; min clearance %.3f m; time median %.0f ms"
+                  % (planners[node], len(planned), len(results[node]), statistics.median(r["turn"] for r in planned),
+                     sum(r["turn"] for r in planned), min(r["clearance"] for r in planned),
+                     statistics.median(r["ms"] for r in results[node])))
+        if args.save:
+            json.dump({"map": args.map, "planner": planners[node], "node": node, "repeat": args.repeat,
+                       "results": results[node]}, open(args.save.replace("{node}", node), "w"))
 
 
 def compare(base_path, other_path):
@@ -217,7 +235,9 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="seed of the random pairs")
     parser.add_argument("--min-obstacle-distance", type=float, default=0.35, help="m, random starts and goals")
     parser.add_argument("--min-separation", type=float, help="m between a random start and goal (half the map)")
-    parser.add_argument("--wait", type=float, default=30, help="s to wait for /move_base/make_plan")
+    parser.add_argument("--wait", type=float, default=30, help="s to wait for each node's make_plan service")
+    parser.add_argument("--nodes", default="move_base", help="move_base nodes to ask, comma-separated, in turn")
+    parser.add_argument("--repeat", type=int, default=1, help="ask each node this many times per request (median kept)")
     parser.add_argument("--save", help="write the requests, measurements and plans to this JSON file")
     parser.add_argument("--compare", nargs=2, metavar=("BASE.json", "OTHER.json"),
                         help="compare two saved runs (OTHER over BASE) instead of probing")

@@ -1,5 +1,5 @@
-// WorkerGroup: every worker runs the job once per run(), on threads kept between runs, and an
-// exception thrown by a worker reaches the caller.
+// WorkerGroup: every worker runs the job once per run(), on threads kept between runs, share()
+// runs it on the caller and on whoever joins in time, and an exception thrown by a worker reaches the caller.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -49,4 +49,43 @@ TEST(PlannerThreads, WorkerGroupOfOneRunsOnTheCaller) {
     seen = std::this_thread::get_id();
   });
   EXPECT_EQ(seen, std::this_thread::get_id());
+}
+
+// share(): parts claimed from a counter are each done exactly once, whoever joins; a worker kept
+// busy elsewhere (here: still asleep when the caller is done) holds nothing up, and the group
+// stays usable for run() and share() alike.
+TEST(PlannerThreads, WorkerGroupShareDoesEveryClaimedPartOnceWhoeverJoins) {
+  eaci::WorkerGroup group(3);
+  for (int job = 0; job < 200; ++job) {
+    const int parts = job % 7;
+    std::vector<std::atomic<int>> done(static_cast<std::size_t>(parts));
+    std::atomic<int> next{0};
+    group.share([&](int) {
+      for (int k = next.fetch_add(1); k < parts; k = next.fetch_add(1)) ++done[static_cast<std::size_t>(k)];
+    });
+    for (int k = 0; k < parts; ++k) EXPECT_EQ(done[static_cast<std::size_t>(k)].load(), 1) << "job " << job;
+  }
+  std::vector<int> calls(3, 0);
+  std::mutex mutex;
+  group.run([&](int worker) {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++calls[static_cast<std::size_t>(worker)];
+  });
+  EXPECT_EQ(calls, std::vector<int>({1, 1, 1}));
+}
+
+TEST(PlannerThreads, WorkerGroupShareRunsOnTheCallerAndRethrows) {
+  eaci::WorkerGroup group(2);
+  std::atomic<bool> caller_ran{false};
+  group.share([&](int worker) {
+    if (worker == 0) caller_ran = true;
+  });
+  EXPECT_TRUE(caller_ran.load());
+  EXPECT_THROW(group.share([](int worker) {
+                 if (worker == 0) throw std::runtime_error("the caller's part failed");
+               }),
+               std::runtime_error);
+  std::atomic<int> calls{0};
+  group.run([&](int) { ++calls; });
+  EXPECT_EQ(calls.load(), 2);
 }

@@ -126,7 +126,7 @@ class Colony {
   // random stream and route slot, so which worker walks which ant cannot change the result.
   void walkAnts(int iteration, int first, int last) {
     std::atomic<int> next_ant{first};
-    workers_.run([&](int worker) {
+    workers_.share([&](int worker) {
       AntWalker& walker = worker_state_[static_cast<std::size_t>(worker)].walker;
       AntRoute& scratch = worker_state_[static_cast<std::size_t>(worker)].scratch;
       for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < last;

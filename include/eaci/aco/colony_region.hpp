@@ -34,11 +34,8 @@ class ColonyRegion {
     for (int d = 0; d < kDirections; ++d)
       region.index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
     region.moves_.assign(grid.cellCount(), 0);
-    for (std::size_t i = 0; i < grid.cellCount(); ++i) {
-      const Cell c = grid.cellAt(i);
-      for (int d = 0; d < kDirections; ++d)
-        if (grid.canMove(c, d)) region.moves_[i] |= static_cast<std::uint8_t>(1u << d);
-    }
+    for (std::size_t i = 0; i < grid.cellCount(); ++i)
+      if (grid.cellBytes()[i] != CostGrid::kObstacle) region.moves_[i] = static_cast<std::uint8_t>(grid.movesFrom(grid.cellAt(i)));
     return region;
   }
 
@@ -68,9 +65,8 @@ class ColonyRegion {
       next_ring.clear();
       for (std::uint32_t i : ring) {
         const Cell here = grid.cellAt(i);
-        for (int d = 0; d < kDirections; ++d) {
-          if (!grid.canMove(here, d)) continue;
-          const Cell next = step(here, d);
+        for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
+          const Cell next = step(here, __builtin_ctz(moves));
           if (mark(next) != kNone) continue;
           mark(next) = 0;
           const auto j = static_cast<std::uint32_t>(grid.index(next));
@@ -80,18 +76,18 @@ class ColonyRegion {
       }
       ring.swap(next_ring);
     }
-    std::sort(region.grid_index_.begin(), region.grid_index_.end());
+    sortIndices(region.grid_index_, ring);
     region.size_ = region.grid_index_.size();
     for (std::size_t r = 0; r < region.size_; ++r) mark(grid.cellAt(region.grid_index_[r])) = static_cast<std::uint32_t>(r);
     region.neighbours_.assign(region.size_ * kDirections, kNone);
     region.moves_.assign(region.size_, 0);
     for (std::size_t r = 0; r < region.size_; ++r) {
       const Cell here = grid.cellAt(region.grid_index_[r]);
-      for (int d = 0; d < kDirections; ++d) {
-        if (!grid.canMove(here, d)) continue;
+      for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
+        const int d = __builtin_ctz(moves);
         const Cell next = step(here, d);
         const std::uint32_t n = region.bounds_.contains(next) ? mark(next) : kNone;
-        region.neighbours_[r * kDirections + d] = n;
+        region.neighbours_[r * kDirections + static_cast<std::size_t>(d)] = n;
         if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
       }
     }
@@ -130,6 +126,26 @@ class ColonyRegion {
   }
 
  private:
+  // Sorts `values` ascending: three passes of a radix sort on 11 bits each (`scratch` is used).
+  static void sortIndices(std::vector<std::uint32_t>& values, std::vector<std::uint32_t>& scratch) {
+    constexpr int kBits = 11;
+    constexpr std::uint32_t kBuckets = 1u << kBits;
+    scratch.resize(values.size());
+    std::vector<std::uint32_t> count(kBuckets);
+    for (int shift = 0; shift < 32; shift += kBits) {
+      std::fill(count.begin(), count.end(), 0u);
+      for (std::uint32_t v : values) ++count[(v >> shift) & (kBuckets - 1)];
+      std::uint32_t total = 0;
+      for (std::uint32_t& c : count) {
+        const std::uint32_t here = c;
+        c = total;
+        total += here;
+      }
+      for (std::uint32_t v : values) scratch[count[(v >> shift) & (kBuckets - 1)]++] = v;
+      values.swap(scratch);
+    }
+  }
+
   bool whole_map_ = false;
   std::size_t grid_cells_ = 0;
   std::size_t size_ = 0;

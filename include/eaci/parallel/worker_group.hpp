@@ -1,8 +1,15 @@
 // A fixed set of threads, started once, that run the same job on demand: the colony walks
 // each iteration's ants on it instead of starting threads every iteration, and the search that
 // meets in the middle runs its two sides on it, round by round.
+//
+// Jobs come in quick succession there (a round every 0.1-0.2 ms), and waking a sleeping thread
+// costs about as much: a thread that finds nothing to do, and the caller waiting for the
+// others, first watch for up to kSpin before they go to sleep. On a busy machine (move_base's
+// own threads, a simulation) a worker may still wake late: share() does not wait for it.
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -27,7 +34,7 @@ class WorkerGroup {
   ~WorkerGroup() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      stopping_ = true;
+      stopping_.store(true, std::memory_order_release);
     }
     wake_.notify_all();
     for (std::thread& t : threads_) t.join();
@@ -35,7 +42,31 @@ class WorkerGroup {
 
   // Calls job(w) once for every worker w in [0, workers), worker 0 on the calling thread, and
   // returns when all have returned; rethrows the first exception a worker threw.
-  void run(const Job& job) {
+  void run(const Job& job) { start(job, true); }
+
+  // Calls job(0) on the calling thread and job(w) on each worker w that wakes before the
+  // calling thread has returned from it; returns when every call has returned (rethrowing the
+  // first exception). For jobs whose parts go to whoever claims them first (an atomic counter):
+  // a worker that wakes late then leaves its parts to the others instead of holding them up.
+  void share(const Job& job) { start(job, false); }
+
+ private:
+  static constexpr std::chrono::microseconds kSpin{50};
+
+  // Watches `ready` for up to kSpin; true once it holds.
+  template <class Ready>
+  static bool spinUntil(const Ready& ready) {
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    for (int k = 1;; ++k) {
+      if (ready()) return true;
+      if (k % 64 == 0 && std::chrono::steady_clock::now() >= until) return false;
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+    }
+  }
+
+  void start(const Job& job, bool everyone) {
     if (threads_.empty()) {
       job(0);
       return;
@@ -43,33 +74,53 @@ class WorkerGroup {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &job;
-      pending_ = threads_.size();
+      open_ = true;
+      // run(): every worker must take part; share(): only those that join while it is open.
+      pending_.store(everyone ? threads_.size() : 0, std::memory_order_relaxed);
+      everyone_ = everyone;
       error_ = nullptr;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     runGuarded(job, 0);
-    std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == 0; });
+    if (!everyone) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      open_ = false;  // nobody joins from here on
+    }
+    const auto all_done = [this] { return pending_.load(std::memory_order_acquire) == 0; };
+    if (!spinUntil(all_done)) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      done_.wait(lock, all_done);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
     job_ = nullptr;
     if (error_) std::rethrow_exception(error_);
   }
 
- private:
   void serve(int worker) {
     std::uint64_t seen = 0;
     for (;;) {
+      const auto work_or_stop = [&] {
+        return stopping_.load(std::memory_order_acquire) || generation_.load(std::memory_order_acquire) != seen;
+      };
+      if (!spinUntil(work_or_stop)) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, work_or_stop);
+      }
       const Job* job = nullptr;
       {
-        std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-        if (stopping_) return;
-        seen = generation_;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (stopping_.load(std::memory_order_relaxed)) return;
+        seen = generation_.load(std::memory_order_relaxed);
+        if (!open_) continue;  // a share() that ended before this worker woke
+        if (!everyone_) pending_.fetch_add(1, std::memory_order_relaxed);
         job = job_;
       }
       runGuarded(*job, worker);
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (--pending_ == 0) done_.notify_one();
+      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+        std::lock_guard<std::mutex> lock(mutex_);  // the caller checks pending_ under it before it sleeps
+        done_.notify_one();
+      }
     }
   }
 
@@ -86,10 +137,12 @@ class WorkerGroup {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable done_;
-  const Job* job_ = nullptr;
-  std::size_t pending_ = 0;
-  std::uint64_t generation_ = 0;
-  bool stopping_ = false;
+  const Job* job_ = nullptr;       // under mutex_
+  bool open_ = false;              // under mutex_: workers may still join the current job
+  bool everyone_ = true;           // under mutex_: run() rather than share()
+  std::atomic<std::size_t> pending_{0};  // calls on workers not yet returned
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<bool> stopping_{false};
   std::exception_ptr error_;
 };
 

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +33,7 @@
 
 #include "eaci/parallel/worker_group.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/search/bucket_queue.hpp"
 
 namespace eaci {
 
@@ -301,17 +303,6 @@ class SearchQueue {
   std::size_t outside_heap_ = 0;             // entries in the ring and the pile
 };
 
-// The moves the rule allows (bit d: direction d, as CostGrid::canMove) given which neighbours
-// are free (bit d: the neighbour in direction d). Without corner cutting a diagonal also needs
-// the two straight neighbours beside it, directions d - 1 and d + 1.
-inline unsigned allowedMoves(unsigned free_neighbours, bool allow_corner_cutting) {
-  if (allow_corner_cutting) return free_neighbours;
-  const unsigned straight = free_neighbours & 0x55u;
-  const unsigned from_before = ((straight << 1) | (straight >> 7)) & 0xFFu;  // bit d - 1 moved to d
-  const unsigned from_after = ((straight >> 1) | (straight << 7)) & 0xFFu;   // bit d + 1 moved to d
-  return straight | (free_neighbours & 0xAAu & from_before & from_after);
-}
-
 // The neighbours of a cell by direction, as window slot and grid index offsets, and the allowed
 // moves from a cell that stay in the window. Cells off the border of window and grid (all
 // eight neighbours inside both) skip the bounds checks.
@@ -429,13 +420,14 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
 
 // One side of a search that meets in the middle (GridSearchWorkspace::cheapestRouteBetween):
 // the search from the source (`forward`) or from the target over the reversed moves. Its cells
-// settle in order of route cost plus a potential, half the difference of the octile distances
-// to the far end and to the near end, which keeps every move's reduced cost >= 0 on both sides
-// alike, so each side is a Dijkstra search on the same reduced costs.
+// leave the open list in order of route cost plus a potential, half the difference of the
+// octile distances to the far end and to the near end, which keeps every move's reduced cost
+// >= 0 on both sides alike, so each side is a Dijkstra search on the same reduced costs, with
+// a bucket queue (BucketQueue: a cell may be labelled again within a bucket).
 template <class Labels>
 struct MeetingSide {
   Labels labels;
-  SearchQueue* open;
+  BucketQueue* open;
   std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
   Cell near_end, far_end;
   bool forward;
@@ -444,19 +436,20 @@ struct MeetingSide {
   double priority(Cell c, double g) const {
     return g + 0.5 * (octileDistance(c, far_end) - octileDistance(c, near_end) + span);
   }
-  bool stale(const SearchEntry& e) const { return e.cost > labels.distance(e.slot); }
+  bool stale(const BucketEntry& e) const { return e.cost > labels.distance(e.slot); }
+  void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, g), BucketEntry{g, slot}); }
 
-  // Settles up to `cells` cells; labels only its own slots, reads nothing of the other side.
+  // Takes up to `cells` cells off the open list; labels only its own slots, reads nothing of
+  // the other side.
   void round(const CostGrid& grid, const CellWindow& window, const SearchNeighbourhood& around, int cells) {
     touched->clear();
-    const auto is_stale = [this](const SearchEntry& e) { return stale(e); };
-    SearchEntry top;
+    const auto is_stale = [this](const BucketEntry& e) { return stale(e); };
+    BucketEntry top;
     for (int n = 0; n < cells && open->pop(top, is_stale); ++n) {
-      if (stale(top)) continue;
       relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, !forward, labels,
                  [this](std::uint32_t j, Cell next, double g) {
                    touched->push_back(j);
-                   open->push({priority(next, g), g, j});
+                   push(j, next, g);
                  });
     }
   }
@@ -521,7 +514,7 @@ class GridSearchWorkspace {
     if (backward_.capacity < window_.size()) backward_.allocate(window_.size());
     const double span = octileDistance(source, target);
     detail::MeetingSide<Labels> sides[2] = {
-        {currentLabels(), &open_, &touched_[0].cells, source, target, true, span},
+        {currentLabels(), &meeting_open_, &touched_[0].cells, source, target, true, span},
         {backward_.of(generation_), &backward_open_, &touched_[1].cells, target, source, false, span}};
     CellPath route;
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
@@ -531,25 +524,32 @@ class GridSearchWorkspace {
       const auto slot = static_cast<std::uint32_t>(window_.slot(end));
       sides[side].labels.label(slot, 0.0, GridSearchResult::kNoMove);
       sides[side].open->clear();
-      sides[side].open->push({sides[side].priority(end, 0.0), 0.0, slot});
+      sides[side].push(slot, end, 0.0);
     }
     const detail::SearchNeighbourhood around(grid, window_);
     double mu = source == target ? 0.0 : std::numeric_limits<double>::infinity();
     std::uint32_t meeting = static_cast<std::uint32_t>(window_.slot(source));
     int rounds = 0;
     for (;;) {
-      detail::SearchEntry next[2];
-      const bool open_forward = sides[0].open->peek(next[0], [&](const detail::SearchEntry& e) { return sides[0].stale(e); });
-      const bool open_backward = sides[1].open->peek(next[1], [&](const detail::SearchEntry& e) { return sides[1].stale(e); });
+      double lowest[2];
+      const bool open_forward = sides[0].open->lowerBound(lowest[0], [&](const detail::BucketEntry& e) { return sides[0].stale(e); });
+      const bool open_backward = sides[1].open->lowerBound(lowest[1], [&](const detail::BucketEntry& e) { return sides[1].stale(e); });
       if (!open_forward || !open_backward) break;  // one side has settled all it can reach
-      if (next[0].priority + next[1].priority >= mu + span) break;
+      if (lowest[0] + lowest[1] >= mu + span) break;
       // Rounds grow from kFirstMeetingRound cells to kMeetingRound, so that a short route costs
       // few cells more than the search needs; the small ones stay on this thread.
       const int round_cells = std::min(kMeetingRound, kFirstMeetingRound << std::min(rounds++, 20));
       const auto run_side = [&](int side) { sides[side].round(grid, window_, around, round_cells); };
       if (threads >= 2 && round_cells == kMeetingRound) {
+        // Each side goes to the first thread that claims it: a worker that wakes late leaves
+        // both to this thread rather than holding the round up.
         if (!meeting_workers_) meeting_workers_ = std::make_unique<WorkerGroup>(2);
-        meeting_workers_->run(run_side);
+        std::atomic<int> next_side{0};
+        meeting_workers_->share([&](int) {
+          for (int side = next_side.fetch_add(1, std::memory_order_relaxed); side < 2;
+               side = next_side.fetch_add(1, std::memory_order_relaxed))
+            run_side(side);
+        });
       } else {
         run_side(0);
         run_side(1);
@@ -661,7 +661,8 @@ class GridSearchWorkspace {
   static constexpr int kMeetingRound = 2048;
   LabelArrays backward_;
   // What the two sides write during a round sits on cache lines of its own.
-  alignas(64) detail::SearchQueue backward_open_;
+  alignas(64) detail::BucketQueue meeting_open_;
+  alignas(64) detail::BucketQueue backward_open_;
   struct alignas(64) RoundCells {
     std::vector<std::uint32_t> cells;
   };
