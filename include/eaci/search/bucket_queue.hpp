@@ -29,7 +29,7 @@ struct BucketEntry {
 
 class BucketQueue {
  public:
-  static constexpr double kWidth = 1.0 / 16.0;
+  static constexpr double kWidth = 1.0 / 4.0;
 
   void clear() {
     for (auto& bucket : ring_) bucket.clear();
