@@ -325,7 +325,7 @@ TEST(PlannerLimits, StopGapEndsTheRunOnceTheRouteIsAsCheapAsAStars) {
   EXPECT_LT(r.iterations_run, p.max_iterations);
 }
 
-// With stop_gap in force an iteration ends after the first wave of 10 ants that brings a route
+// With stop_gap in force an iteration ends after the first wave of 2 ants that brings a route
 // within the gap. In a corridor one cell wide every ant walks the only route, so the first
 // wave ends the run; without early stopping every iteration walks all m ants.
 TEST(PlannerLimits, StopGapEndsTheIterationAfterTheFirstWaveOfAnts) {
@@ -343,7 +343,7 @@ TEST(PlannerLimits, StopGapEndsTheIterationAfterTheFirstWaveOfAnts) {
   ASSERT_TRUE(waved.success()) << waved.error;
   EXPECT_DOUBLE_EQ(waved.length, 39.0);
   EXPECT_TRUE(waved.stopped_early);
-  EXPECT_EQ(waved.ants_per_iteration, std::vector<int>({10}));
+  EXPECT_EQ(waved.ants_per_iteration, std::vector<int>({2}));
   EXPECT_EQ(waved.lost_ants_per_iteration, std::vector<int>({0}));
   p.early_stop_iterations = 0;  // the paper's protocol: every ant of every iteration
   const auto all = eaci::plan(grid, start, goal, Algorithm::kEaci, p);

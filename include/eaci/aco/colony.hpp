@@ -100,8 +100,9 @@ class Colony {
   // after the first wave that brings a route within the gap: the run stops there, and the rest
   // of the ants could not change that. Waves are fixed by ant index, not by thread, so the
   // result is the same on any thread count. Ants that did not walk count as neither complete
-  // nor lost.
-  static constexpr int kAntsPerWave = 10;
+  // nor lost. Two: one ant per core on two cores; on long routes an ant walk takes
+  // milliseconds, and the first ant within the gap usually comes in the first wave.
+  static constexpr int kAntsPerWave = 2;
   int walkAnts(int iteration) {
     const int ants = params_.ants;
     const bool stop_gap_in_force = params_.early_stop_iterations > 0 && std::isfinite(good_enough_cost_);
