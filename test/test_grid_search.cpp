@@ -271,3 +271,38 @@ TEST(GridSearch, RouteThatMeetsInTheMiddleForgetsOldLabelsWhenTheNumbersWrap) {
   EXPECT_EQ(workspace.cheapestRouteBetween(grid, Cell{0, 2}, Cell{0, 0}, 1, &cost).size(), 3u);
   EXPECT_DOUBLE_EQ(cost, 2.0);
 }
+
+// The meeting search's open list: buckets of width 1/4 in order, first in first out within a
+// bucket, stale entries dropped, a priority beyond the ring (256 priority units) kept aside
+// until the ring reaches it, and the lower bound of a bucket its lower edge.
+TEST(GridSearch, BucketQueueLeavesByBucketThenByArrival) {
+  eaci::detail::BucketQueue queue;
+  std::vector<bool> stale(8, false);
+  const auto is_stale = [&](const eaci::detail::BucketEntry& e) { return stale[e.slot]; };
+  queue.push(5.1, {5.1, 0});    // bucket 20
+  queue.push(0.3, {0.3, 1});    // bucket 1
+  queue.push(300.0, {300.0, 2});  // bucket 1200: beyond the ring of 1024 buckets
+  queue.push(0.26, {0.26, 3});  // bucket 1, after slot 1
+  queue.push(0.1, {0.1, 4});    // bucket 0
+  queue.push(5.2, {5.2, 5});    // bucket 20, stale by the time it would leave
+  stale[5] = true;
+  double bound = -1.0;
+  ASSERT_TRUE(queue.lowerBound(bound, is_stale));
+  EXPECT_EQ(bound, 0.0);
+  std::vector<std::uint32_t> order;
+  eaci::detail::BucketEntry e{};
+  while (queue.pop(e, is_stale)) {
+    order.push_back(e.slot);
+    if (e.slot == 3) {  // bucket 1 is open: a push below it joins it, one into it comes last in it
+      queue.push(0.0, {0.0, 6});
+      ASSERT_TRUE(queue.lowerBound(bound, is_stale));
+      EXPECT_EQ(bound, 0.25);
+    }
+  }
+  EXPECT_EQ(order, std::vector<std::uint32_t>({4, 1, 3, 6, 0, 2}));
+  EXPECT_FALSE(queue.lowerBound(bound, is_stale));
+  queue.clear();
+  queue.push(1.0, {1.0, 7});
+  ASSERT_TRUE(queue.pop(e, is_stale));
+  EXPECT_EQ(e.slot, 7u);
+}
