@@ -273,7 +273,7 @@ TEST(GridSearch, RouteThatMeetsInTheMiddleForgetsOldLabelsWhenTheNumbersWrap) {
 }
 
 // The meeting search's open list: buckets of width 1/4 in order, first in first out within a
-// bucket, stale entries dropped, a priority beyond the ring (256 priority units) kept aside
+// bucket, stale entries dropped, a priority beyond the ring (64 priority units) kept aside
 // until the ring reaches it, and the lower bound of a bucket its lower edge.
 TEST(GridSearch, BucketQueueLeavesByBucketThenByArrival) {
   eaci::detail::BucketQueue queue;
@@ -281,7 +281,7 @@ TEST(GridSearch, BucketQueueLeavesByBucketThenByArrival) {
   const auto is_stale = [&](const eaci::detail::BucketEntry& e) { return stale[e.slot]; };
   queue.push(5.1, {5.1, 0});    // bucket 20
   queue.push(0.3, {0.3, 1});    // bucket 1
-  queue.push(300.0, {300.0, 2});  // bucket 1200: beyond the ring of 1024 buckets
+  queue.push(300.0, {300.0, 2});  // bucket 1200: beyond the ring of 256 buckets
   queue.push(0.26, {0.26, 3});  // bucket 1, after slot 1
   queue.push(0.1, {0.1, 4});    // bucket 0
   queue.push(5.2, {5.2, 5});    // bucket 20, stale by the time it would leave

@@ -13,6 +13,8 @@
 // allocation and then once per 65 535 searches; it tells the labels of this search from older
 // ones). Both run the same loop and find the same distances
 // and moves: cells leave the open list in one total order (SearchEntry), whatever the queue.
+// The workspace's search that meets in the middle (cheapestRouteBetween) has a queue of its
+// own (BucketQueue: no heap, a cell may be labelled twice), with the same costs.
 //
 // The loop's speed comes from: an open list that keeps only its lowest priorities in a heap
 // (SearchQueue) and drops entries gone stale before they reach it, integer priority compares,
@@ -502,10 +504,11 @@ class GridSearchWorkspace {
   // kMeetingRound cells, each on its own labels; between rounds the cells either side labelled
   // are checked against the other's labels (every pair offers a route, the cheapest so far is
   // mu), and the search ends
-  // once the two sides' next priorities add up to mu + octile(source, target): no cheaper
+  // once the two sides' lowest open priorities (BucketQueue::lowerBound) add up to
+  // mu + octile(source, target): no cheaper
   // route is left. With `threads` >= 2 the two sides of each full-size round run at the
-  // same time, on a thread kept with the workspace; the rounds, and so the route, are the same
-  // on one thread.
+  // same time where a second thread, kept with the workspace, claims one (WorkerGroup::share);
+  // the rounds, and so the route, are the same on one thread.
   // Empty when the target cannot be reached. at() and routeTo() do not answer for it.
   CellPath cheapestRouteBetween(const CostGrid& grid, Cell source, Cell target, int threads = 1,
                                 double* cost = nullptr) {
