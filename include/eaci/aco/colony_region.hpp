@@ -34,8 +34,7 @@ class ColonyRegion {
     for (int d = 0; d < kDirections; ++d)
       region.index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
     region.moves_.assign(grid.cellCount(), 0);
-    for (std::size_t i = 0; i < grid.cellCount(); ++i)
-      if (grid.cellBytes()[i] != CostGrid::kObstacle) region.moves_[i] = static_cast<std::uint8_t>(grid.movesFrom(grid.cellAt(i)));
+    for (std::size_t i = 0; i < grid.cellCount(); ++i) region.moves_[i] = static_cast<std::uint8_t>(grid.movesFrom(grid.cellAt(i)));
     return region;
   }
 

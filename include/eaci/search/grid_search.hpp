@@ -306,12 +306,12 @@ class SearchQueue {
 };
 
 // The neighbours of a cell by direction, as window slot and grid index offsets, and the allowed
-// moves from a cell that stay in the window. Cells off the border of window and grid (all
-// eight neighbours inside both) skip the bounds checks.
+// moves from a cell (CostGrid::movesFrom) that stay in the window. Cells off the window's
+// border (all eight neighbours inside it) skip the window checks.
 class SearchNeighbourhood {
  public:
   SearchNeighbourhood(const CostGrid& grid, const CellWindow& window)
-      : grid_(grid), window_(window), cells_(grid.cellBytes()),
+      : grid_(grid), window_(window),
         row_lo_(std::max(0, window.row0)), row_hi_(std::min(grid.height(), window.row0 + window.rows)),
         col_lo_(std::max(0, window.col0)), col_hi_(std::min(grid.width(), window.col0 + window.cols)) {
     for (int d = 0; d < kDirections; ++d) {
@@ -327,27 +327,18 @@ class SearchNeighbourhood {
     return static_cast<std::size_t>(static_cast<std::ptrdiff_t>(index) + index_step_[dir]);
   }
 
-  // Bit d: the move in direction d from `here` (grid index `index`) is allowed and ends in the window.
-  unsigned movesFrom(Cell here, std::size_t index) const {
-    if (here.row > row_lo_ && here.row + 1 < row_hi_ && here.col > col_lo_ && here.col + 1 < col_hi_) {
-      unsigned free_neighbours = 0;
-      for (int d = 0; d < kDirections; ++d)
-        free_neighbours |= static_cast<unsigned>(cells_[indexTowards(index, d)] != CostGrid::kObstacle) << d;
-      return allowedMoves(free_neighbours, grid_.allowCornerCutting());
-    }
-    unsigned free_neighbours = 0, in_window = 0;
-    for (int d = 0; d < kDirections; ++d) {
-      const Cell next = step(here, d);
-      free_neighbours |= static_cast<unsigned>(grid_.isFree(next)) << d;
-      in_window |= static_cast<unsigned>(window_.contains(next)) << d;
-    }
-    return allowedMoves(free_neighbours, grid_.allowCornerCutting()) & in_window;
+  // Bit d: the move in direction d from `here` is allowed and ends in the window.
+  unsigned movesFrom(Cell here) const {
+    const unsigned moves = grid_.movesFrom(here);
+    if (here.row > row_lo_ && here.row + 1 < row_hi_ && here.col > col_lo_ && here.col + 1 < col_hi_) return moves;
+    unsigned in_window = 0;
+    for (int d = 0; d < kDirections; ++d) in_window |= static_cast<unsigned>(window_.contains(step(here, d))) << d;
+    return moves & in_window;
   }
 
  private:
   const CostGrid& grid_;
   const CellWindow& window_;
-  const std::uint8_t* cells_;
   int row_lo_, row_hi_, col_lo_, col_hi_;  // window and grid overlap: rows [row_lo_, row_hi_), columns likewise
   std::ptrdiff_t slot_step_[kDirections];
   std::ptrdiff_t index_step_[kDirections];
@@ -363,7 +354,7 @@ template <class Labels, class OnLabel>
 void relaxMoves(const CostGrid& grid, const SearchNeighbourhood& around, std::uint32_t slot, Cell here, double cost,
                 bool reverse_costs, Labels& labels, const OnLabel& on_label) {
   const std::size_t index = grid.index(here);
-  for (unsigned moves = around.movesFrom(here, index); moves != 0; moves &= moves - 1) {
+  for (unsigned moves = around.movesFrom(here); moves != 0; moves &= moves - 1) {
     const int d = lowestBit(moves);
     const std::uint32_t j = around.slotTowards(slot, d);
     const double g = cost + grid.moveCostInto(reverse_costs ? index : around.indexTowards(index, d), d);
@@ -390,7 +381,7 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
       const std::uint32_t slot = frontier.back();
       frontier.pop_back();
       const Cell here = window.cellAt(slot);
-      for (unsigned moves = around.movesFrom(here, grid.index(here)); moves != 0; moves &= moves - 1) {
+      for (unsigned moves = around.movesFrom(here); moves != 0; moves &= moves - 1) {
         const std::uint32_t j = around.slotTowards(slot, lowestBit(moves));
         if (labels.distance(j) == 0.0) continue;
         labels.label(j, 0.0, GridSearchResult::kNoMove);
