@@ -229,6 +229,55 @@ TEST(PlannerDeterminism, LargeMapSameResultOnAnyThreadCount) {
   }
 }
 
+// A kept PlannerWorkspace (the ROS node's and plugin's) changes nothing but where the memory
+// and threads come from: plans one after another on maps that grow and shrink, geodesic EACI,
+// the paper's islands and classic ACO in turn, on two threads, give what fresh plans give.
+TEST(PlannerDeterminism, KeptWorkspaceGivesWhatFreshPlansGive) {
+  CostGrid large(300, 260, false);
+  for (int r = 0; r < large.height(); ++r)
+    for (int c = 0; c < large.width(); ++c) {
+      if (c % 60 == 30 && (r + c) % 130 > 12) large.setBlocked(Cell{r, c}, true);
+      else large.setCost(Cell{r, c}, static_cast<std::uint8_t>((r * 7 + c * 13) % 90));
+    }
+  const CostGrid paper = eaci::test::paperMap("paper-40x40.txt", true);  // the paper's move rule
+  struct Request {
+    const CostGrid* grid;
+    Cell start, goal;
+    Algorithm algorithm;
+    eaci::IslandStrategy islands;
+  };
+  const Request requests[] = {
+      {&large, Cell{5, 3}, Cell{250, 290}, Algorithm::kEaci, eaci::IslandStrategy::kGeodesic},
+      {&paper, Cell{0, 0}, Cell{39, 39}, Algorithm::kEaci, eaci::IslandStrategy::kGeodesic},
+      {&paper, Cell{0, 0}, Cell{39, 39}, Algorithm::kEaci, eaci::IslandStrategy::kPaper},
+      {&large, Cell{200, 10}, Cell{20, 160}, Algorithm::kEaci, eaci::IslandStrategy::kGeodesic},
+      {&paper, Cell{0, 0}, Cell{39, 39}, Algorithm::kAco, eaci::IslandStrategy::kGeodesic},
+      {&large, Cell{5, 3}, Cell{250, 290}, Algorithm::kEaci, eaci::IslandStrategy::kGeodesic},
+  };
+  eaci::PlannerWorkspace workspace;
+  for (const Request& q : requests) {
+    eaci::Parameters p;
+    p.max_iterations = 12;
+    p.early_stop_iterations = 4;
+    p.island_strategy = q.islands;
+    p.threads = 2;
+    p.seed = 3;
+    eaci::PlanOptions kept;
+    kept.workspace = &workspace;
+    kept.record_pheromone = true;
+    eaci::PlanOptions fresh;
+    fresh.record_pheromone = true;
+    const auto with_workspace = eaci::plan(*q.grid, q.start, q.goal, q.algorithm, p, kept);
+    const auto without = eaci::plan(*q.grid, q.start, q.goal, q.algorithm, p, fresh);
+    ASSERT_TRUE(without.success()) << without.error;
+    EXPECT_EQ(with_workspace.path, without.path);
+    EXPECT_EQ(with_workspace.islands, without.islands);
+    EXPECT_EQ(with_workspace.lost_ants_per_iteration, without.lost_ants_per_iteration);
+    EXPECT_EQ(with_workspace.iteration_best_length, without.iteration_best_length);
+    EXPECT_EQ(with_workspace.pheromone, without.pheromone);
+  }
+}
+
 TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
   // Never allocated: the check runs on the dimensions. Only colonies that keep pheromone on
   // the whole map are capped: classic ACO, the paper's islands and region_margin 0 (geodesic

@@ -51,14 +51,22 @@ enum class PlanStatus {
 constexpr std::size_t kMaxPheromoneBytes = std::size_t{2} << 30;
 constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
 
+// What a caller that plans again and again (the ROS node, the move_base plugin, the benchmarks)
+// keeps from plan to plan: the exact search's buffers (A*, and the cheapest route geodesic
+// islands sit on) and the colony's routes, walkers, worker threads, region and pheromone
+// memory. A plan then allocates and clears no whole-map search arrays, starts no threads and
+// reuses the memory of its region and pheromone field. One plan at a time per workspace.
+struct PlannerWorkspace {
+  GridSearchWorkspace search;
+  ColonyWorkspace colony;
+};
+
 struct PlanOptions {
   bool record_pheromone = false;   // fill PlanResult::pheromone (strongest edge leaving each cell)
   StopCheck should_stop;           // asked between iterations; the best route so far is returned
   IterationObserver observer;      // sees the field at iteration 0 (initial) and after each update
-  // Buffers of the exact search (A*, and the cheapest route geodesic islands sit on), kept by
-  // a caller that plans again and again (the ROS node, the move_base plugin): a plan then
-  // allocates and clears no whole-map search arrays. Null: a workspace of this call's own.
-  GridSearchWorkspace* search_workspace = nullptr;
+  // Kept by a caller that plans again and again; null: this call's own buffers and threads.
+  PlannerWorkspace* workspace = nullptr;
 };
 
 struct PlanResult {
@@ -187,7 +195,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   if (algorithm == Algorithm::kAStar) {
     GridSearchWorkspace own_workspace;
-    GridSearchWorkspace& workspace = options.search_workspace ? *options.search_workspace : own_workspace;
+    GridSearchWorkspace& workspace = options.workspace ? options.workspace->search : own_workspace;
     const ShortestPath shortest = shortestPath(grid, start, goal, workspace);
     r.path = shortest.path;
     r.islands = {start, goal};
@@ -199,12 +207,19 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     // Geodesic EACI finds out itself, from the A* route its islands sit on, without a flood of the map.
     const bool geodesic = algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kGeodesic;
     if (!geodesic && !reachableFrom(grid, start)[grid.index(goal)]) return unreachable();
-    const ColonyResult colony = algorithm == Algorithm::kEaci
-                                    ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
-                                                options.search_workspace)
-                                    : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer);
+    GridSearchWorkspace* search_workspace = options.workspace ? &options.workspace->search : nullptr;
+    ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
+    ColonyResult colony = algorithm == Algorithm::kEaci
+                              ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
+                                          search_workspace, colony_workspace)
+                              : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer,
+                                                colony_workspace);
     if (colony.goal_unreachable) return unreachable();
     detail::fillFromColony(grid, colony, options, r);
+    if (colony_workspace) {  // their memory serves the next plan
+      colony_workspace->region = std::move(colony.region);
+      colony_workspace->pheromone = std::move(colony.pheromone);
+    }
     if (r.path.empty() && !colony.search_route.empty()) {
       r.path = colony.search_route;
       r.route_from_search = true;

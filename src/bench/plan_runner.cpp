@@ -53,7 +53,7 @@ RunRecord timedPlan(const PlanRequest& request) {
   std::vector<double> iteration_end_ms;
   iteration_end_ms.reserve(static_cast<std::size_t>(request.params.max_iterations));
   eaci::PlanOptions options;
-  options.search_workspace = request.workspace;
+  options.workspace = request.workspace;
   const double cpu_start = processCpuMilliseconds();
   const Clock::time_point start = Clock::now();
   options.observer = [&](int iteration, const eaci::PheromoneField&, const eaci::ColonyRegion&) {

@@ -18,8 +18,8 @@ struct PlanRequest {
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
   eaci::Parameters params;
   double budget_ms = 0.0;  // > 0: stop between iterations once this much wall time has passed
-  // Search buffers kept between plans (as the ROS node and plugin keep theirs); null: the plan's own.
-  eaci::GridSearchWorkspace* workspace = nullptr;
+  // Buffers and threads kept between plans (as the ROS node and plugin keep theirs); null: the plan's own.
+  eaci::PlannerWorkspace* workspace = nullptr;
 };
 
 // Wall time is measured around plan() alone; an observer notes the end of each iteration

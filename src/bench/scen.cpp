@@ -120,7 +120,7 @@ class ScenRunner {
     const eaci::OccupancyMap& m = map(r.map_path);
     checkProblem(options_, p, m, r.map_path);
     eaci::Parameters params = options_.parameters;  // the defaults or --params; corner cutting forbidden
-    // Each planner keeps its search buffers from plan to plan, as a robot's planner would.
+    // Each planner keeps its buffers and threads from plan to plan, as a robot's planner would.
     r.astar = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, params, 0.0, &astar_workspace_});
     for (int seed = 1; seed <= options_.seeds; ++seed) {
       params.seed = static_cast<std::uint64_t>(seed);
@@ -139,7 +139,7 @@ class ScenRunner {
 
   const ScenOptions& options_;
   Progress progress_;
-  eaci::GridSearchWorkspace astar_workspace_, eaci_workspace_;
+  eaci::PlannerWorkspace astar_workspace_, eaci_workspace_;
   std::map<std::string, eaci::OccupancyMap> maps_;
 };
 

@@ -123,7 +123,7 @@ bool EaciGlobalPlanner::planWithTolerance(const geometry_msgs::PoseStamped& star
   RosPlannerOptions plan_options = options;
   plan_options.visualize_pheromone = options.visualize_pheromone && pheromone_pub_.getNumSubscribers() > 0;
   const GridPlan result = planOnGrid(view, map_frame, start, goal, tolerance, params, plan_options,
-                                     cancellation_.flag(), &search_workspace_);
+                                     cancellation_.flag(), &workspace_);
   PlanRecord record;
   record.start = {start.pose.position.x, start.pose.position.y};
   record.goal = {goal.pose.position.x, goal.pose.position.y};

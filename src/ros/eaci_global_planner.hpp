@@ -69,7 +69,7 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
   ros::ServiceServer make_plan_service_;
   std::mutex plan_mutex_;
   PlanCancellation cancellation_;
-  eaci::GridSearchWorkspace search_workspace_;  // the exact search's buffers, kept between plans (under plan_mutex_)
+  eaci::PlannerWorkspace workspace_;  // the planner's buffers and threads, kept between plans (under plan_mutex_)
   ros::CallbackQueue cancel_queue_;
   std::unique_ptr<ros::AsyncSpinner> cancel_spinner_;
   ros::ServiceServer cancel_service_;

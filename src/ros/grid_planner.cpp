@@ -39,7 +39,7 @@ const char* toString(StopReason reason) {
 GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
                     const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
                     const RosPlannerOptions& options, const std::atomic<bool>* cancel,
-                    eaci::GridSearchWorkspace* workspace) {
+                    eaci::PlannerWorkspace* workspace) {
   if (view.empty()) return failed("the map is empty");
   const auto start_cell = frame.worldToCell({start.pose.position.x, start.pose.position.y});
   if (!start_cell) return failed("start " + where(start) + " is off the map");
@@ -56,7 +56,7 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
 
   eaci::PlanOptions plan_options;
   plan_options.record_pheromone = options.visualize_pheromone;
-  plan_options.search_workspace = workspace;
+  plan_options.workspace = workspace;
   const bool timed = options.max_planning_time > 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timed ? options.max_planning_time : 0.0);
   StopReason stopped_by = StopReason::kNone;

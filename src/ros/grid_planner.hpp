@@ -32,11 +32,11 @@ struct GridPlan {
 // `tolerance` metres, no route, or no route before the colony was stopped -> !ok with the reason.
 // The colony is stopped between two iterations, and the best route so far returned, when
 // max_planning_time runs out, when `*cancel` becomes true (the ~cancel services), or when ROS
-// shuts down (ros::ok() false or a shutdown requested). `workspace`: the exact search's
-// buffers, kept by the caller from plan to plan (eaci::PlanOptions::search_workspace).
+// shuts down (ros::ok() false or a shutdown requested). `workspace`: the planner's
+// buffers and threads, kept by the caller from plan to plan (eaci::PlanOptions::workspace).
 GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
                     const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
                     const RosPlannerOptions& options, const std::atomic<bool>* cancel = nullptr,
-                    eaci::GridSearchWorkspace* workspace = nullptr);
+                    eaci::PlannerWorkspace* workspace = nullptr);
 
 }  // namespace eaci_ros

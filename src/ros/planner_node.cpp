@@ -147,7 +147,7 @@ class PlannerNode {
                        : costView(costs_, static_cast<int>(map_.info.width), static_cast<int>(map_.info.height),
                                   params.lethal_cost, params.allow_unknown);
     const GridPlan plan =
-        planOnGrid(view, frameOf(map_), start, goal, tolerance, params, options, cancellation_.flag(), &search_workspace_);
+        planOnGrid(view, frameOf(map_), start, goal, tolerance, params, options, cancellation_.flag(), &workspace_);
     if (!plan.ok) {
       ROS_WARN("eaci_planner_node: make_plan: %s", plan.error.c_str());
       return true;
@@ -178,7 +178,7 @@ class PlannerNode {
   ros::ServiceServer service_;
   // ~cancel: its own queue and thread.
   PlanCancellation cancellation_;
-  eaci::GridSearchWorkspace search_workspace_;  // kept from plan to plan, used under mutex_
+  eaci::PlannerWorkspace workspace_;  // buffers and threads kept from plan to plan, used under mutex_
   ros::CallbackQueue cancel_queue_;
   ros::AsyncSpinner cancel_spinner_{1, &cancel_queue_};
   ros::ServiceServer cancel_service_;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -58,19 +59,57 @@ inline int colonyWorkers(const Parameters& params, std::size_t region_cells) {
   return std::min(resolveThreadCount(params.threads), params.ants);
 }
 
+// What a colony keeps from one run to the next when its caller keeps it (the planner's
+// workspace, PlanOptions::workspace): the ants' routes, each worker's walker, the worker
+// threads, and the memory of the region and pheromone field the solvers build each plan. A
+// run then starts no threads and allocates (and page-faults) almost nothing on a map it has
+// planned on before.
+struct ColonyWorkspace {
+  // What one worker writes at every step, on cache lines of its own (two workers writing to
+  // one line would make each wait for the other).
+  struct alignas(64) WorkerState {
+    AntWalker walker;  // reuses its memory from walk to walk
+    AntRoute scratch;  // the route being walked
+  };
+  std::vector<AntRoute> routes;           // one per ant
+  std::vector<WorkerState> worker_state;  // one per worker
+  std::unique_ptr<WorkerGroup> workers;   // worker_state.size() threads, the caller's included (group())
+  ColonyRegion region;                    // the last plan's, its memory for the next
+  PheromoneField pheromone;               // likewise
+
+  // Room for `ants` routes and `threads` workers (the threads already started stay when their
+  // number is the same).
+  void prepare(int ants, int threads) {
+    routes.resize(static_cast<std::size_t>(ants));
+    for (AntRoute& route : routes) route.complete = false;
+    if (worker_state.size() != static_cast<std::size_t>(threads)) {
+      workers.reset();
+      worker_state = std::vector<WorkerState>(static_cast<std::size_t>(threads));
+    }
+  }
+  // The worker threads, started on first use.
+  WorkerGroup& group() {
+    if (!workers) workers = std::make_unique<WorkerGroup>(static_cast<int>(worker_state.size()));
+    return *workers;
+  }
+};
+
 class Colony {
  public:
   // `cheapest_cost`: the cost of a cheapest route through the waypoints when known (geodesic
-  // islands), for stop_gap; +infinity when not.
+  // islands), for stop_gap; +infinity when not. `workspace`: routes, walkers and threads kept
+  // by the caller between runs (null: the colony's own).
   Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se,
-         double cheapest_cost = std::numeric_limits<double>::infinity())
+         double cheapest_cost = std::numeric_limits<double>::infinity(), ColonyWorkspace* workspace = nullptr)
       : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
         good_enough_cost_(std::isfinite(cheapest_cost)
                               ? cheapest_cost * (1.0 + params.stop_gap) + 1e-9 * std::max(1.0, cheapest_cost)
                               : -std::numeric_limits<double>::infinity()),
-        routes_(static_cast<std::size_t>(params.ants)),
-        worker_state_(static_cast<std::size_t>(colonyWorkers(params, setup.region.size()))),
-        workers_(static_cast<int>(worker_state_.size())) {}
+        workspace_(workspace != nullptr ? *workspace : own_workspace_), routes_(workspace_.routes),
+        worker_state_(workspace_.worker_state),
+        on_workers_(colonyWorkers(params, setup.region.size()) > 1) {
+    workspace_.prepare(params.ants, std::min(resolveThreadCount(params.threads), params.ants));
+  }
 
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
     ColonyRun run;
@@ -127,7 +166,7 @@ class Colony {
   // random stream and route slot, so which worker walks which ant cannot change the result.
   void walkAnts(int iteration, int first, int last) {
     std::atomic<int> next_ant{first};
-    workers_.share([&](int worker) {
+    const auto walk_claimed = [&](int worker) {
       AntWalker& walker = worker_state_[static_cast<std::size_t>(worker)].walker;
       AntRoute& scratch = worker_state_[static_cast<std::size_t>(worker)].scratch;
       for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < last;
@@ -138,7 +177,9 @@ class Colony {
         walker.walk(setup_, rng, scratch);
         std::swap(scratch, routes_[static_cast<std::size_t>(k)]);
       }
-    });
+    };
+    if (on_workers_) workspace_.group().share(walk_claimed);
+    else walk_claimed(0);
   }
 
   // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so
@@ -191,15 +232,11 @@ class Colony {
   UpdateRule update_;
   double d_se_;
   double good_enough_cost_;  // stop_gap: a best route this cheap ends the run (early stopping on)
-  std::vector<AntRoute> routes_;
-  // What one worker writes at every step, on cache lines of its own (two workers writing to
-  // one line would make each wait for the other).
-  struct alignas(64) WorkerState {
-    AntWalker walker;  // reuses its memory from walk to walk
-    AntRoute scratch;  // the route being walked
-  };
-  std::vector<WorkerState> worker_state_;
-  WorkerGroup workers_;
+  ColonyWorkspace own_workspace_;  // used when the caller keeps none
+  ColonyWorkspace& workspace_;
+  std::vector<AntRoute>& routes_;
+  std::vector<ColonyWorkspace::WorkerState>& worker_state_;
+  bool on_workers_;  // walk on the worker threads (colonyWorkers > 1), else on the calling thread
   int best_ = -1;
   int worst_ = -1;
 };

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
@@ -24,9 +25,12 @@ class ColonyRegion {
 
   ColonyRegion() = default;
 
-  // Every cell of the map; a move is allowed where CostGrid::canMove allows it.
-  static ColonyRegion wholeMap(const CostGrid& grid) {
-    ColonyRegion region;
+  // Every cell of the map; a move is allowed where CostGrid::canMove allows it. `reuse`: a
+  // region whose memory the new one takes over (a planner keeps one between plans).
+  static ColonyRegion wholeMap(const CostGrid& grid) { return wholeMap(grid, ColonyRegion()); }
+  static ColonyRegion wholeMap(const CostGrid& grid, ColonyRegion reuse) {
+    ColonyRegion region = std::move(reuse);
+    region.clear();
     region.whole_map_ = true;
     region.grid_cells_ = grid.cellCount();
     region.grid_width_ = grid.width();
@@ -41,7 +45,11 @@ class ColonyRegion {
   // The free cells at most `margin` moves (CostGrid::canMove) from a cell of `route`; a move
   // is allowed where the grid allows it and both cells are in the region.
   static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin) {
-    ColonyRegion region;
+    return aroundRoute(grid, route, margin, ColonyRegion());
+  }
+  static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin, ColonyRegion reuse) {
+    ColonyRegion region = std::move(reuse);
+    region.clear();
     region.grid_cells_ = grid.cellCount();
     region.grid_width_ = grid.width();
     // Every region cell lies within `margin` of the route's bounding box: the map-to-region
@@ -50,7 +58,8 @@ class ColonyRegion {
     region.region_of_slot_.assign(region.bounds_.size(), kNone);
     const auto mark = [&region](Cell c) -> std::uint32_t& { return region.region_of_slot_[region.bounds_.slot(c)]; };
     // Breadth first from the route, one ring of moves at a time; marks cells with 0 on entry.
-    std::vector<std::uint32_t> ring;
+    std::vector<std::uint32_t>& ring = region.ring_;
+    std::vector<std::uint32_t>& next_ring = region.next_ring_;
     for (const Cell& c : route) {
       if (!grid.isFree(c)) continue;
       if (mark(c) == kNone) {
@@ -59,7 +68,6 @@ class ColonyRegion {
         ring.push_back(static_cast<std::uint32_t>(grid.index(c)));
       }
     }
-    std::vector<std::uint32_t> next_ring;
     for (int distance = 1; distance <= margin && !ring.empty(); ++distance) {
       next_ring.clear();
       for (std::uint32_t i : ring) {
@@ -125,6 +133,16 @@ class ColonyRegion {
   }
 
  private:
+  // Empty, with the memory it holds kept for the next region.
+  void clear() {
+    whole_map_ = false;
+    grid_cells_ = size_ = 0;
+    grid_width_ = 0;
+    bounds_ = CellWindow{};
+    for (auto* v : {&grid_index_, &region_of_slot_, &neighbours_, &ring_, &next_ring_}) v->clear();
+    moves_.clear();
+  }
+
   // Sorts `values` ascending: three passes of a radix sort on 11 bits each (`scratch` is used).
   static void sortIndices(std::vector<std::uint32_t>& values, std::vector<std::uint32_t>& scratch) {
     constexpr int kBits = 11;
@@ -158,6 +176,7 @@ class ColonyRegion {
   CellWindow bounds_;
   std::vector<std::uint32_t> region_of_slot_;
   std::vector<std::uint32_t> neighbours_;  // [r * kDirections + d]
+  std::vector<std::uint32_t> ring_, next_ring_;  // aroundRoute's rings of cells (and sort scratch)
 };
 
 }  // namespace eaci

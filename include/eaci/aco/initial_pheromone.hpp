@@ -48,10 +48,12 @@ inline double regionEdgePheromone(const Line& line, const Eigen::Vector2d& from,
 // every other edge takes min tau0. An edge in two regions takes the larger value.
 // When no region edge has a finite value (every region a single line of cells), max tau0
 // and min tau0 are taken as 1.
+// `reuse`: a field whose memory the new one takes over (PheromoneField::reset).
 inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyRegion& cells,
-                                             const std::vector<Cell>& islands, double lambda, double alpha) {
-  // (edge, value) of every region edge; the regions are small, so this is much smaller than a
-  // value per edge of the map.
+                                             const std::vector<Cell>& islands, double lambda, double alpha,
+                                             PheromoneField reuse = {}) {
+  // (edge, value) of every region edge, in the order the regions are visited; the regions are
+  // small, so this is much smaller than a value per edge of the map.
   std::vector<std::pair<std::size_t, double>> region_value;
   double max_tau0 = -std::numeric_limits<double>::infinity();
   double min_tau0 = std::numeric_limits<double>::infinity();
@@ -82,13 +84,21 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyR
   }
   if (!std::isfinite(max_tau0)) max_tau0 = min_tau0 = 1.0;
 
-  // An edge in two regions: its largest value (sorting puts it last among the edge's entries).
-  std::sort(region_value.begin(), region_value.end());
-  PheromoneField field(cells.size(), min_tau0, alpha);
-  for (std::size_t k = 0; k < region_value.size(); ++k) {
-    if (k + 1 < region_value.size() && region_value[k + 1].first == region_value[k].first) continue;
-    const auto [edge, value] = region_value[k];
-    field.set(edge / kDirections, static_cast<int>(edge % kDirections), std::isfinite(value) ? value : lambda * max_tau0);
+  // An edge in two regions: its largest value, +infinity above every finite one.
+  PheromoneField field = std::move(reuse);
+  field.reset(cells.size(), min_tau0, alpha);
+  std::vector<std::uint8_t> on_line(cells.size(), 0);  // bit d: the edge took Eq. 21's lambda * max tau0
+  for (const auto& [edge, value] : region_value) {
+    const std::size_t cell = edge / kDirections;
+    const int d = static_cast<int>(edge % kDirections);
+    const auto bit = static_cast<std::uint8_t>(1u << d);
+    if (on_line[cell] & bit) continue;
+    if (std::isfinite(value)) {
+      field.raise(cell, d, value);
+    } else {
+      on_line[cell] |= bit;
+      field.set(cell, d, lambda * max_tau0);
+    }
   }
   field.refreshChanged();
   return field;

@@ -28,14 +28,16 @@ class LegDistanceField {
   LegDistanceField() = default;
 
   // `leg` is the part of the cheapest route from the previous island to `target`.
-  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target) : target_(target) {
+  // `scratch`: the search's open list, shared by the fields of one plan (null: its own).
+  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target, GridSearchScratch* scratch = nullptr)
+      : target_(target) {
     CellPath extent = leg;
     extent.push_back(target);
     GridSearchRequest request;
     request.source = target;
     request.reverse_costs = true;  // costs of routes to the island
     request.window = CellWindow::around(grid, extent, std::max(kMinWindowMargin, static_cast<int>(leg.size()) / 2));
-    field_ = searchGrid(grid, request);
+    field_ = scratch != nullptr ? searchGrid(grid, request, *scratch) : searchGrid(grid, request);
     outside_ = field_.largest_distance + 1.0;
   }
 
@@ -55,13 +57,14 @@ class LegDistanceField {
 inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, const CellPath& shortest_route,
                                                        const std::vector<Cell>& islands) {
   std::vector<LegDistanceField> fields(islands.size());
+  GridSearchScratch scratch;
   std::size_t from = 0;
   for (std::size_t z = 1; z < islands.size(); ++z) {
     std::size_t to = from;
     while (to < shortest_route.size() && !(shortest_route[to] == islands[z])) ++to;
     const CellPath leg(shortest_route.begin() + static_cast<std::ptrdiff_t>(from),
                        shortest_route.begin() + static_cast<std::ptrdiff_t>(std::min(to + 1, shortest_route.size())));
-    fields[z] = LegDistanceField(grid, leg, islands[z]);
+    fields[z] = LegDistanceField(grid, leg, islands[z], &scratch);
     from = to;
   }
   return fields;

@@ -23,11 +23,19 @@ constexpr double kPheromoneFloor = 1e-10;
 class PheromoneField {
  public:
   PheromoneField() = default;
-  PheromoneField(std::size_t cell_count, double initial, double alpha)
-      : alpha_(alpha), floor_weight_(std::pow(kPheromoneFloor, alpha)),
-        stored_(cell_count * kDirections, std::max(initial, kPheromoneFloor)),
-        stored_weight_(cell_count * kDirections, std::pow(std::max(initial, kPheromoneFloor), alpha)),
-        dirty_(cell_count * kDirections, 0) {}
+  PheromoneField(std::size_t cell_count, double initial, double alpha) { reset(cell_count, initial, alpha); }
+
+  // Every edge of `cell_count` cells at `initial` again, in the memory this field already holds
+  // where it is enough (a planner that keeps its fields between plans allocates no new one).
+  void reset(std::size_t cell_count, double initial, double alpha) {
+    alpha_ = alpha;
+    floor_weight_ = std::pow(kPheromoneFloor, alpha);
+    scale_ = weight_scale_ = 1.0;
+    stored_.assign(cell_count * kDirections, std::max(initial, kPheromoneFloor));
+    stored_weight_.assign(cell_count * kDirections, std::pow(std::max(initial, kPheromoneFloor), alpha));
+    dirty_.assign(cell_count * kDirections, 0);
+    changed_.clear();
+  }
 
   std::size_t cellCount() const { return stored_.size() / kDirections; }
   double alpha() const { return alpha_; }
@@ -51,6 +59,14 @@ class PheromoneField {
   // Sets tau of one edge; its weight follows at the next refreshChanged().
   void set(std::size_t cell, int dir, double value) {
     const std::size_t e = cell * kDirections + dir;
+    stored_[e] = value / scale_;
+    markChanged(e);
+  }
+
+  // Raises tau of one edge to `value` where that is more; its weight follows at the next refreshChanged().
+  void raise(std::size_t cell, int dir, double value) {
+    const std::size_t e = cell * kDirections + dir;
+    if (value / scale_ <= stored_[e]) return;
     stored_[e] = value / scale_;
     markChanged(e);
   }

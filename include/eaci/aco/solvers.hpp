@@ -69,18 +69,24 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
 
 // The cells the colony works on: geodesic islands with region_margin > 0, the cells within that
 // many moves of the route; otherwise the whole map.
-inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params) {
+// `reuse`: a region whose memory the new one takes over.
+inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params,
+                                 ColonyRegion reuse = {}) {
   if (params.island_strategy == IslandStrategy::kGeodesic && params.region_margin > 0)
-    return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin);
-  return ColonyRegion::wholeMap(grid);
+    return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin, std::move(reuse));
+  return ColonyRegion::wholeMap(grid, std::move(reuse));
 }
 
 // Steps 1-7: auxiliary map and islands (by params.island_strategy), non-uniform initial pheromone, ants walking leg by
 // leg with the turning-aware heuristic, adaptive update. `should_stop` is also asked between
 // the set-up steps; stopped there, the result has no route and an empty pheromone field.
+// `search_workspace`, `colony_workspace`: buffers and threads kept by the caller between plans
+// (null: this call's own). The result's region and pheromone field hold the colony
+// workspace's memory; a caller that keeps the workspace hands them back to it when done.
 inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
-                              GridSearchWorkspace* search_workspace = nullptr) {
+                              GridSearchWorkspace* search_workspace = nullptr,
+                              ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
   const auto stopped_in_setup = [&] {
     if (should_stop && should_stop(0)) result.run.interrupted = true;
@@ -94,28 +100,37 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   result.waypoints = islands.islands;
   result.search_route = islands.route;
   if (stopped_in_setup()) return result;
-  ColonyRegion region = colonyRegion(grid, islands, params);
-  result.pheromone = initialIslandPheromone(grid, region, result.waypoints, params.lambda, params.alpha);
+  ColonyRegion region =
+      colonyRegion(grid, islands, params, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{});
+  result.pheromone =
+      initialIslandPheromone(grid, region, result.waypoints, params.lambda, params.alpha,
+                             colony_workspace ? std::move(colony_workspace->pheromone) : PheromoneField{});
   if (stopped_in_setup()) return result;
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_distance));
   if (observer) observer(0, result.pheromone, setup.region);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), islands.route_cost);
+  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), islands.route_cost,
+                colony_workspace);
   result.run = colony.run(should_stop, observer);
   result.region = std::move(setup.region);
   return result;
 }
 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
+// `colony_workspace` as for solveEaci.
 inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
-                                    const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
+                                    const StopCheck& should_stop = {}, const IterationObserver& observer = {},
+                                    ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
   result.waypoints = {start, goal};
-  result.pheromone = PheromoneField(grid.cellCount(), params.aco_tau0, params.alpha);
-  WalkSetup setup(grid, ColonyRegion::wholeMap(grid), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
-                  params.beta, params.epsilon);
+  if (colony_workspace) result.pheromone = std::move(colony_workspace->pheromone);
+  result.pheromone.reset(grid.cellCount(), params.aco_tau0, params.alpha);
+  WalkSetup setup(grid,
+                  ColonyRegion::wholeMap(grid, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}),
+                  result.pheromone, result.waypoints, HeuristicRule::kGoalDistance, params.beta, params.epsilon);
   if (observer) observer(0, result.pheromone, setup.region);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal));
+  Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal),
+                std::numeric_limits<double>::infinity(), colony_workspace);
   result.run = colony.run(should_stop, observer);
   result.region = std::move(setup.region);
   return result;

@@ -464,16 +464,26 @@ struct ResultLabels {
 // it enters, so costs from the source are not costs to it on a cost map (they are on a binary
 // map): a field that must hold costs *to* its source searches the reversed moves
 // (`reverse_costs`), which charge the cell a move leaves instead.
-inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest& request) {
+// The open list and flood stack of searchGrid, kept by a caller that runs many small searches
+// (one per island leg), so that each costs no allocation of its own.
+struct GridSearchScratch {
+  detail::SearchQueue open;
+  std::vector<std::uint32_t> frontier;
+};
+
+inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest& request, GridSearchScratch& scratch) {
   GridSearchResult result;
   result.window = request.window.value_or(CellWindow::whole(grid));
   result.distance.assign(result.window.size(), std::numeric_limits<double>::infinity());
   if (request.keep_moves) result.came_dir.assign(result.window.size(), GridSearchResult::kNoMove);
   detail::ResultLabels labels{result.distance.data(), request.keep_moves ? result.came_dir.data() : nullptr};
-  detail::SearchQueue open;
-  std::vector<std::uint32_t> frontier;
-  result.largest_distance = detail::runGridSearch(grid, request, result.window, labels, open, frontier);
+  result.largest_distance = detail::runGridSearch(grid, request, result.window, labels, scratch.open, scratch.frontier);
   return result;
+}
+
+inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest& request) {
+  GridSearchScratch scratch;
+  return searchGrid(grid, request, scratch);
 }
 
 // The same search, into buffers that stay for the next one: a caller that keeps a workspace
