@@ -28,5 +28,5 @@ if [ "$what" = tsan ] || [ "$what" = all ]; then
   configure build/tsan thread
   cmake --build build/tsan -j"$jobs" --target eaci_tests
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-    build/tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*'
+    build/tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*:Landmarks.*'
 fi

@@ -306,3 +306,152 @@ TEST(GridSearch, BucketQueueLeavesByBucketThenByArrival) {
   ASSERT_TRUE(queue.pop(e, is_stale));
   EXPECT_EQ(e.slot, 7u);
 }
+
+// Landmark bounds (ALT) against the independent Dijkstra: never above a route's cost either
+// way, consistent along every allowed move (so the meeting search may use them), on random
+// cost maps with every cost rule above, obstacles that split the map, and both corner rules.
+TEST(Landmarks, BoundsNeverExceedRouteCostsAndChangeByNoMoreThanAMoveCosts) {
+  int pairs = 0;
+  for (std::uint32_t seed = 1; seed <= 24; ++seed) {
+    std::mt19937 rng(seed);
+    const CostGrid grid = randomGrid(rng, 5 + static_cast<int>(rng() % 40), 5 + static_cast<int>(rng() % 40));
+    const auto landmarks = eaci::Landmarks::compute(grid, 1 + static_cast<int>(rng() % 6));
+    if (!landmarks) continue;  // no free cell
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    for (int k = 0; k < 4; ++k) {
+      const Cell target = randomCell(rng, grid);
+      if (!grid.isFree(target)) continue;
+      const std::vector<double> to_target = referenceCosts(grid, CellWindow::whole(grid), target, true);
+      const std::vector<double> from_target = referenceCosts(grid, CellWindow::whole(grid), target, false);
+      const std::size_t t = grid.index(target);
+      for (std::size_t i = 0; i < grid.cellCount(); ++i) {
+        const Cell here = grid.cellAt(i);
+        if (!grid.isFree(here)) continue;
+        const double bound = landmarks->lowerBound(i, t);
+        ++pairs;
+        EXPECT_LE(bound, to_target[i] + tolerance(to_target[i]));
+        EXPECT_LE(bound, from_target[i] + tolerance(from_target[i]));
+        for (int d = 0; d < eaci::kDirections; ++d) {
+          if (!grid.canMove(here, d)) continue;
+          const std::size_t j = grid.index(eaci::step(here, d));
+          EXPECT_LE(bound - landmarks->lowerBound(j, t), grid.moveCost(here, d)) << "move " << d << " from cell " << i;
+        }
+      }
+    }
+  }
+  EXPECT_GT(pairs, 2000);
+}
+
+// A 6 x 6 map split by a wall with one door at its foot: a landmark left of the wall bounds a
+// route across it by the detour through the door, not by the straight line.
+TEST(Landmarks, BoundAcrossAWallCountsTheDetour) {
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 1, 0, 0, 0},
+                                            {0, 0, 1, 0, 0, 0},
+                                            {0, 0, 1, 0, 0, 0},
+                                            {0, 0, 1, 0, 0, 0},
+                                            {0, 0, 1, 0, 0, 0},
+                                            {0, 0, 0, 0, 0, 0}},
+                                           false);
+  const auto landmarks = eaci::Landmarks::compute(grid, 2);
+  ASSERT_TRUE(landmarks);
+  // (0,1) to (0,3): octile 2; the route goes down 5 cells, 2 along the foot of the wall (no
+  // corner cutting past its end) and up 5: 12.
+  const double bound = landmarks->lowerBound(grid.index(Cell{0, 1}), grid.index(Cell{0, 3}));
+  EXPECT_GT(bound, 3 * 2.0);
+  EXPECT_LE(bound, 12.0);
+}
+
+TEST(Landmarks, HoldOnCostlierGridsNotOnCheaperOnes) {
+  CostGrid grid(20, 10, false);
+  grid.setCost(Cell{4, 4}, 100);
+  grid.setBlocked(Cell{5, 5}, true);
+  const auto landmarks = eaci::Landmarks::compute(grid, 3);
+  ASSERT_TRUE(landmarks);
+  EXPECT_TRUE(landmarks->holdsFor(grid));
+  CostGrid costlier = grid;
+  costlier.setCost(Cell{1, 1}, 200);
+  costlier.setBlocked(Cell{4, 4}, true);
+  EXPECT_TRUE(landmarks->holdsFor(costlier));
+  CostGrid cheaper = grid;
+  cheaper.setCost(Cell{4, 4}, 99);
+  EXPECT_FALSE(landmarks->holdsFor(cheaper));
+  CostGrid cleared = grid;
+  cleared.setBlocked(Cell{5, 5}, false);
+  EXPECT_FALSE(landmarks->holdsFor(cleared));
+  CostGrid other_rule = grid;
+  other_rule.setCostRule({50.0, 1.0});
+  EXPECT_FALSE(landmarks->holdsFor(other_rule));
+  EXPECT_FALSE(landmarks->holdsFor(CostGrid(20, 11, false)));
+  EXPECT_FALSE(landmarks->holdsFor(CostGrid(20, 10, true)));
+}
+
+// Kept in a cache: none at first (made in the background), then the same ones for a costlier
+// costmap, and new ones, holding for both, after a cell got cheaper.
+TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
+  CostGrid grid(30, 30, false);
+  for (int r = 3; r < 27; ++r) grid.setCost(Cell{r, 15}, 200);
+  eaci::LandmarkCache cache(2);
+  EXPECT_EQ(cache.usableFor(grid), nullptr);
+  cache.wait();
+  const auto made = cache.usableFor(grid);
+  ASSERT_NE(made, nullptr);
+  EXPECT_EQ(made->count(), 2);
+  CostGrid costlier = grid;
+  costlier.setBlocked(Cell{0, 0}, true);
+  EXPECT_EQ(cache.usableFor(costlier), made);
+  CostGrid cheaper = grid;
+  cheaper.setCost(Cell{10, 15}, 0);
+  cheaper.setBlocked(Cell{29, 29}, true);
+  EXPECT_EQ(cache.usableFor(cheaper), nullptr);
+  cache.wait();
+  const auto remade = cache.usableFor(cheaper);
+  ASSERT_NE(remade, nullptr);
+  EXPECT_NE(remade, made);
+  EXPECT_TRUE(remade->holdsFor(grid));
+  EXPECT_TRUE(remade->holdsFor(cheaper));
+}
+
+// A cache destroyed while it makes landmarks on a large map stops them instead of finishing.
+TEST(Landmarks, CacheDestroyedWhileMakingThemStops) {
+  const CostGrid grid(2000, 2000, false);
+  auto cache = std::make_unique<eaci::LandmarkCache>(8);
+  EXPECT_EQ(cache->usableFor(grid), nullptr);
+  cache.reset();  // joins the thread: a hang here would time the test out
+}
+
+// With landmarks the search that meets in the middle still costs what the independent Dijkstra
+// says, on one thread and on two, over maps large enough to take many rounds.
+TEST(Landmarks, RouteThatMeetsInTheMiddleWithLandmarksCostsWhatAnIndependentDijkstraSays) {
+  int routes = 0;
+  for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+    std::mt19937 rng(seed);
+    const CostGrid grid = randomGrid(rng, 60 + static_cast<int>(rng() % 140), 60 + static_cast<int>(rng() % 140));
+    GridSearchWorkspace one_thread, two_threads;
+    one_thread.useLandmarks(4);
+    two_threads.useLandmarks(4);
+    one_thread.cheapestRouteBetween(grid, Cell{0, 0}, Cell{0, 0});  // a free or blocked corner: starts them or not
+    for (int k = 0; k < 12; ++k) {
+      const Cell source = randomCell(rng, grid), target = randomCell(rng, grid);
+      if (!grid.isFree(source) || !grid.isFree(target)) continue;
+      for (GridSearchWorkspace* w : {&one_thread, &two_threads}) {
+        w->cheapestRouteBetween(grid, source, source);  // makes the landmarks if not under way
+        w->landmarkCache()->wait();
+      }
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", request " + std::to_string(k));
+      const double expected = referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)];
+      double cost = 0.0, cost_two = 0.0;
+      const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
+      const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
+      EXPECT_EQ(route, route_two);
+      if (std::isinf(expected)) {
+        EXPECT_TRUE(route.empty());
+        continue;
+      }
+      ++routes;
+      EXPECT_NEAR(cost, expected, tolerance(expected));
+      EXPECT_EQ(eaci::test::routeDefect(grid, route, source, target), "");
+      EXPECT_NEAR(eaci::routeCost(grid, route), expected, tolerance(expected));
+    }
+  }
+  EXPECT_GT(routes, 40);
+}

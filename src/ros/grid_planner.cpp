@@ -57,6 +57,7 @@ GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geo
   eaci::PlanOptions plan_options;
   plan_options.record_pheromone = options.visualize_pheromone;
   plan_options.workspace = workspace;
+  if (workspace != nullptr) workspace->search.useLandmarks(options.landmarks);
   const bool timed = options.max_planning_time > 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timed ? options.max_planning_time : 0.0);
   StopReason stopped_by = StopReason::kNone;

@@ -33,7 +33,8 @@ struct GridPlan {
 // The colony is stopped between two iterations, and the best route so far returned, when
 // max_planning_time runs out, when `*cancel` becomes true (the ~cancel services), or when ROS
 // shuts down (ros::ok() false or a shutdown requested). `workspace`: the planner's
-// buffers and threads, kept by the caller from plan to plan (eaci::PlanOptions::workspace).
+// buffers and threads, kept by the caller from plan to plan (eaci::PlanOptions::workspace),
+// which keeps options.landmarks landmarks too.
 GridPlan planOnGrid(const eaci::GridView& view, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
                     const geometry_msgs::PoseStamped& goal, double tolerance, const eaci::Parameters& params,
                     const RosPlannerOptions& options, const std::atomic<bool>* cancel = nullptr,

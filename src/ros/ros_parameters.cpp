@@ -49,7 +49,7 @@ const std::vector<std::string>& rosOptionNames() {
   static const std::vector<std::string> names = {"algorithm",          "default_tolerance", "occupied_threshold",
                                                  "publish_plan",       "max_planning_time", "visualize_pheromone",
                                                  "robot_radius",       "orientation_mode",  "inflation_radius",
-                                                 "cost_scaling_factor"};
+                                                 "cost_scaling_factor", "landmarks"};
   return names;
 }
 
@@ -74,6 +74,8 @@ void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const
     options.inflation_radius = eaci::detail::parseDouble(name, text);
   } else if (name == "cost_scaling_factor") {
     options.cost_scaling_factor = eaci::detail::parseDouble(name, text);
+  } else if (name == "landmarks") {
+    options.landmarks = eaci::detail::parseInt(name, text);
   } else if (name == "orientation_mode") {
     try {
       options.orientation_mode = eaci::orientationModeFromString(text);
@@ -96,6 +98,7 @@ std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOpt
   if (name == "inflation_radius") return exactText(options.inflation_radius);
   if (name == "cost_scaling_factor") return exactText(options.cost_scaling_factor);
   if (name == "orientation_mode") return std::to_string(static_cast<int>(options.orientation_mode));
+  if (name == "landmarks") return std::to_string(options.landmarks);
   for (const auto& [parameter, value] : eaci::parameterValues(params)) {
     if (parameter != name) continue;
     return std::visit(
@@ -130,6 +133,8 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
     e << "cost_scaling_factor must be >= 0 (got " << options.cost_scaling_factor << ")";
   else if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0)
     e << "max_planning_time must be >= 0 seconds, 0 = no limit (got " << options.max_planning_time << ")";
+  else if (options.landmarks < 0 || options.landmarks > 64)
+    e << "landmarks must be in 0..64, 0 = none (got " << options.landmarks << ")";
   return e.str();
 }
 

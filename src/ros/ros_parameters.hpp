@@ -27,6 +27,9 @@ struct RosPlannerOptions {
   double inflation_radius = 0.0;    // m; 0 = no costs, obstacles grown by robot_radius only
   double cost_scaling_factor = 10.0;  // 1/m, costmap_2d's default
   eaci::OrientationMode orientation_mode = eaci::OrientationMode::kForward;  // global_planner's ~orientation_mode
+  // Landmarks kept for the island route's search on maps from 256 x 256 cells (eaci::LandmarkCache):
+  // made in the background after the first plan on a costmap, 4 bytes a cell each; 0 = none.
+  int landmarks = 4;
 };
 
 // The core parameters with the ROS layer's defaults: allow_unknown true (as navfn and

@@ -36,6 +36,7 @@
 #include "eaci/parallel/worker_group.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/bucket_queue.hpp"
+#include "eaci/search/landmarks.hpp"
 
 namespace eaci {
 
@@ -411,26 +412,60 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
   return largest_distance;
 }
 
+// Lower bounds of the cost from the source to a cell and from the cell to the target, for the
+// search that meets in the middle: the octile distance, raised by landmark bounds where
+// landmarks are at hand. Both are consistent (a move changes them by no more than it costs).
+struct MeetingBounds {
+  Cell source, target;
+  const Landmarks* landmarks = nullptr;
+  const float* source_marks = nullptr;  // landmark distances of the source and the target
+  const float* target_marks = nullptr;
+  double span = 0.0;  // a lower bound of the whole route's cost (the same from either end)
+
+  MeetingBounds(Cell s, Cell t, std::size_t s_index, std::size_t t_index, const Landmarks* marks)
+      : source(s), target(t), landmarks(marks) {
+    span = octileDistance(s, t);
+    if (landmarks == nullptr) return;
+    source_marks = landmarks->of(s_index);
+    target_marks = landmarks->of(t_index);
+    span = std::max(span, landmarks->lowerBound(source_marks, target_marks));
+  }
+
+  // Half of (bound to the target - bound from the source) at cell `c` of grid index `index`:
+  // the potential the forward side adds and the backward side subtracts.
+  double halfDifference(Cell c, std::size_t index) const {
+    double from_source = octileDistance(c, source), to_target = octileDistance(c, target);
+    if (landmarks != nullptr) {
+      double marks_source, marks_target;
+      landmarks->lowerBounds(landmarks->of(index), source_marks, target_marks, marks_source, marks_target);
+      from_source = std::max(from_source, marks_source);
+      to_target = std::max(to_target, marks_target);
+    }
+    return 0.5 * (to_target - from_source);
+  }
+};
+
 // One side of a search that meets in the middle (GridSearchWorkspace::cheapestRouteBetween):
 // the search from the source (`forward`) or from the target over the reversed moves. Its cells
 // leave the open list in order of route cost plus a potential, half the difference of the
-// octile distances to the far end and to the near end, which keeps every move's reduced cost
-// >= 0 on both sides alike, so each side is a Dijkstra search on the same reduced costs, with
-// a bucket queue (BucketQueue: a cell may be labelled again within a bucket).
+// bounds to the far end and from the near end (MeetingBounds), which keeps every move's
+// reduced cost >= 0 on both sides alike, so each side is a Dijkstra search on the same reduced
+// costs, with a bucket queue (BucketQueue: a cell may be labelled again within a bucket).
 template <class Labels>
 struct MeetingSide {
   Labels labels;
   BucketQueue* open;
   std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
-  Cell near_end, far_end;
+  const MeetingBounds* bounds;
   bool forward;
-  double span;  // octile distance between the ends: keeps the priorities >= 0
 
-  double priority(Cell c, double g) const {
-    return g + 0.5 * (octileDistance(c, far_end) - octileDistance(c, near_end) + span);
+  // The window is the whole grid: a slot is the grid index. span / 2 keeps it >= 0.
+  double priority(Cell c, std::uint32_t slot, double g) const {
+    const double half = bounds->halfDifference(c, slot);
+    return g + (forward ? half : -half) + 0.5 * bounds->span;
   }
   bool stale(const BucketEntry& e) const { return e.cost > labels.distance(e.slot); }
-  void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, g), BucketEntry{g, slot}); }
+  void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, slot, g), BucketEntry{g, slot}); }
 
   // Takes up to `cells` cells off the open list; labels only its own slots, reads nothing of
   // the other side.
@@ -516,13 +551,16 @@ class GridSearchWorkspace {
     window_ = CellWindow::whole(grid);
     prepare(window_.size());
     if (backward_.capacity < window_.size()) backward_.allocate(window_.size());
-    const double span = octileDistance(source, target);
-    detail::MeetingSide<Labels> sides[2] = {
-        {currentLabels(), &meeting_open_, &touched_[0].cells, source, target, true, span},
-        {backward_.of(generation_), &backward_open_, &touched_[1].cells, target, source, false, span}};
     CellPath route;
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
     if (!grid.isFree(source) || !grid.isFree(target)) return route;
+    const std::shared_ptr<const Landmarks> landmarks = landmarks_ ? landmarks_->usableFor(grid) : nullptr;
+    const detail::MeetingBounds bounds(source, target, grid.index(source), grid.index(target),
+                                       landmarks && landmarks->count() > 0 ? landmarks.get() : nullptr);
+    const double span = bounds.span;
+    detail::MeetingSide<Labels> sides[2] = {
+        {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true},
+        {backward_.of(generation_), &backward_open_, &touched_[1].cells, &bounds, false}};
     for (int side = 0; side < 2; ++side) {
       const Cell end = side == 0 ? source : target;
       const auto slot = static_cast<std::uint32_t>(window_.slot(end));
@@ -578,6 +616,18 @@ class GridSearchWorkspace {
     }
     return route;
   }
+
+  // Keep `count` landmarks (Landmarks, LandmarkCache) for cheapestRouteBetween: made in the
+  // background on the first costmap it searches, used by later searches on that costmap (or a
+  // costlier one). 0 (the default): none, octile bounds alone. For callers that plan many times
+  // on one costmap; a change of count drops the landmarks kept.
+  void useLandmarks(int count) {
+    if (count == (landmarks_ ? landmarks_->count() : 0)) return;
+    landmarks_.reset();
+    if (count > 0) landmarks_ = std::make_unique<LandmarkCache>(count);
+  }
+  // The landmark cache (null without useLandmarks), e.g. to wait for landmarks under way.
+  LandmarkCache* landmarkCache() { return landmarks_.get(); }
 
   const CellWindow& window() const { return window_; }
   double largestDistance() const { return largest_distance_; }  // over the settled cells
@@ -672,6 +722,7 @@ class GridSearchWorkspace {
   };
   RoundCells touched_[2];
   std::unique_ptr<WorkerGroup> meeting_workers_;
+  std::unique_ptr<LandmarkCache> landmarks_;  // useLandmarks
   CellWindow window_;
   double largest_distance_ = 0.0;
   alignas(64) detail::SearchQueue open_;

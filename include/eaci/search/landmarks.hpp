@@ -1,0 +1,248 @@
+// Landmarks for the search that meets in the middle (beyond the paper): lower bounds of route
+// costs from the triangle inequality, ALT (A*, landmarks, triangle inequality; Goldberg &
+// Harrelson, SODA 2005). For a few landmark cells L the cost of a cheapest route from L to
+// every cell is kept; a route from a to b then costs at least |d(L, a) - d(L, b)|. On a cost
+// map these bounds are much stronger than the octile distance (a route that must go round a
+// wall, or through an inflated door, costs far more than its straight line), so the search
+// labels far fewer cells. They cost (count + 1) searches of the whole map to make and 4 bytes
+// per landmark and cell to keep: worth it only to a planner that plans many times on one
+// costmap (the move_base plugin, the planner node), which keeps them in a LandmarkCache.
+//
+// Costs here are symmetric: a move between cells a and b weighs its length times the smaller
+// of the two cells' factors, never more than the move costs either way (a move costs by the
+// cell it enters), so d(L, x) bounds routes in both directions. Bounds computed on one grid
+// stay lower bounds, and consistent, on every grid whose cells are all at least as costly (an
+// obstacle counts as the costliest): Landmarks::holdsFor checks that.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "eaci/grid/cost_grid.hpp"
+#include "eaci/search/bucket_queue.hpp"
+
+namespace eaci {
+
+class Landmarks {
+ public:
+  // `count` landmarks on `grid` by farthest selection: the first is the cell farthest from a
+  // free cell near the middle of the free cells, each next one the cell farthest from all
+  // chosen so far, all in that cell's connected part of the map. Null when `cancel` became true
+  // on the way, or the grid has no free cell; none (count() 0) where route costs are too large
+  // for floats to bound them usefully.
+  static std::shared_ptr<const Landmarks> compute(const CostGrid& grid, int count,
+                                                  const std::atomic<bool>* cancel = nullptr) {
+    auto landmarks = std::shared_ptr<Landmarks>(new Landmarks(grid));
+    const std::uint8_t* cells = grid.cellBytes();
+    std::vector<std::size_t> free_cells_seen;
+    std::size_t free_count = 0;
+    for (std::size_t i = 0; i < grid.cellCount(); ++i) free_count += cells[i] != CostGrid::kObstacle;
+    if (free_count == 0 || count <= 0) return nullptr;
+    std::size_t seed = 0;
+    for (std::size_t i = 0, seen = 0; i < grid.cellCount(); ++i)
+      if (cells[i] != CostGrid::kObstacle && seen++ == free_count / 2) {
+        seed = i;
+        break;
+      }
+    std::vector<double> distance(grid.cellCount());
+    std::vector<double> nearest_landmark(grid.cellCount(), std::numeric_limits<double>::infinity());
+    detail::BucketQueue open;
+    if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
+    seed = farthest(distance, seed);
+    landmarks->count_ = count;
+    landmarks->distance_.assign(grid.cellCount() * static_cast<std::size_t>(count), kUnreached);
+    double largest = 0.0;
+    for (int k = 0; k < count; ++k) {
+      if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
+      for (std::size_t i = 0; i < distance.size(); ++i) {
+        if (!std::isfinite(distance[i])) continue;
+        landmarks->distance_[i * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)] = static_cast<float>(distance[i]);
+        largest = std::max(largest, distance[i]);
+        nearest_landmark[i] = std::min(nearest_landmark[i], distance[i]);
+      }
+      seed = farthest(nearest_landmark, seed);
+    }
+    // As floats, each distance is off by at most largest x 2^-24, and so is the difference of
+    // two; a bound is then off by at most 3 x that, and shrinking every bound by a factor
+    // 1 - 8 x that keeps them consistent (no move costs less than 1).
+    // Distances too large for floats to bound usefully: landmarks that bound nothing (count 0),
+    // so that the grid is not tried again.
+    const double rounding = largest * std::ldexp(1.0, -24);
+    if (8.0 * rounding >= 0.5) {
+      landmarks->count_ = 0;
+      landmarks->distance_.clear();
+      return landmarks;
+    }
+    landmarks->shrink_ = 1.0 - 8.0 * rounding;
+    return landmarks;
+  }
+
+  int count() const { return count_; }
+  std::size_t cellCount() const { return floor_.cellCount(); }
+
+  // True when the bounds hold on `grid`: the same size, move rule and cost rule, and no cell
+  // cheaper than on the grid they were made on (or free where it was an obstacle).
+  bool holdsFor(const CostGrid& grid) const {
+    if (grid.width() != floor_.width() || grid.height() != floor_.height() ||
+        grid.allowCornerCutting() != floor_.allowCornerCutting() ||
+        grid.costRule().neutral_cost != floor_.costRule().neutral_cost ||
+        grid.costRule().cost_factor != floor_.costRule().cost_factor)
+      return false;
+    const std::uint8_t* now = grid.cellBytes();
+    const std::uint8_t* then = floor_.cellBytes();
+    std::uint8_t cheaper = 0;  // no early exit: the loop vectorises
+    for (std::size_t i = 0; i < grid.cellCount(); ++i) cheaper |= static_cast<std::uint8_t>(now[i] < then[i]);
+    return cheaper == 0;
+  }
+
+  // The grid they were made on.
+  const CostGrid& grid() const { return floor_; }
+
+  // A lower bound of the cost of every route between grid cells a and b, either way (0 where
+  // no landmark reaches both).
+  double lowerBound(std::size_t a, std::size_t b) const { return lowerBound(of(a), of(b)); }
+  // The same from the landmark distances of the two cells (of()).
+  double lowerBound(const float* a, const float* b) const {
+    float bound = 0.0f;
+    for (int k = 0; k < count_; ++k) bound = std::max(bound, std::abs(a[k] - b[k]));  // NaN (unreached) loses
+    return static_cast<double>(bound) * shrink_;
+  }
+  // Both bounds of one cell at once: from cell `c` to `a` and to `b` (landmark distances of each).
+  void lowerBounds(const float* c, const float* a, const float* b, double& to_a, double& to_b) const {
+    float bound_a = 0.0f, bound_b = 0.0f;
+    for (int k = 0; k < count_; ++k) {
+      bound_a = std::max(bound_a, std::abs(c[k] - a[k]));
+      bound_b = std::max(bound_b, std::abs(c[k] - b[k]));
+    }
+    to_a = static_cast<double>(bound_a) * shrink_;
+    to_b = static_cast<double>(bound_b) * shrink_;
+  }
+  // The `count()` landmark distances of grid cell `index`.
+  const float* of(std::size_t index) const { return distance_.data() + index * static_cast<std::size_t>(count_); }
+
+ private:
+  // Unreached: every difference with it is NaN, which std::max(bound, NaN) passes over.
+  static constexpr float kUnreached = std::numeric_limits<float>::quiet_NaN();
+
+  explicit Landmarks(const CostGrid& grid) : floor_(grid) {}
+
+  // Costs of cheapest routes from `source` over the symmetric move costs, +infinity where
+  // unreached; false when cancelled.
+  static bool symmetricCosts(const CostGrid& grid, std::size_t source, std::vector<double>& distance,
+                             detail::BucketQueue& open, const std::atomic<bool>* cancel) {
+    std::fill(distance.begin(), distance.end(), std::numeric_limits<double>::infinity());
+    distance[source] = 0.0;
+    open.clear();
+    open.push(0.0, detail::BucketEntry{0.0, static_cast<std::uint32_t>(source)});
+    const auto stale = [&distance](const detail::BucketEntry& e) { return e.cost > distance[e.slot]; };
+    detail::BucketEntry top;
+    for (std::size_t n = 0; open.pop(top, stale); ++n) {
+      if ((n & 4095) == 0 && cancel != nullptr && cancel->load(std::memory_order_relaxed)) return false;
+      const Cell here = grid.cellAt(top.slot);
+      for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
+        const int d = __builtin_ctz(moves);
+        const std::size_t j = grid.index(step(here, d));
+        const double g = top.cost + std::min(grid.moveCostInto(j, d), grid.moveCostInto(top.slot, d));
+        if (g >= distance[j]) continue;
+        distance[j] = g;
+        open.push(g, detail::BucketEntry{g, static_cast<std::uint32_t>(j)});
+      }
+    }
+    return true;
+  }
+
+  // The reached cell of largest `distance` (the lowest index on ties); `fallback` if none.
+  static std::size_t farthest(const std::vector<double>& distance, std::size_t fallback) {
+    std::size_t best = fallback;
+    for (std::size_t i = 0; i < distance.size(); ++i)
+      if (std::isfinite(distance[i]) && distance[i] > distance[best]) best = i;
+    return best;
+  }
+
+  CostGrid floor_;               // the grid the distances were computed on
+  int count_ = 0;
+  std::vector<float> distance_;  // [cell * count_ + k]: cost between landmark k and the cell; kUnreached
+  double shrink_ = 1.0;          // every bound is multiplied by it (float rounding)
+};
+
+// Landmarks kept for a planner that plans again and again, made in the background: the first
+// plan on a costmap asks, finds none, and starts a thread that makes them; later plans on that
+// costmap, or on one no cell of which is cheaper, use them. When the costmap gets cheaper
+// somewhere (an obstacle cleared), new ones are made on the cell-wise cheapest of the old and
+// the new costmap, so that they hold for both, and costmaps that come and go between the two
+// do not make them again each time. Plans that find none ready search with octile bounds alone:
+// the same costs, though among equally cheap routes they may pick another.
+class LandmarkCache {
+ public:
+  explicit LandmarkCache(int count) : count_(count) {}
+  LandmarkCache(const LandmarkCache&) = delete;
+  LandmarkCache& operator=(const LandmarkCache&) = delete;
+  ~LandmarkCache() {
+    cancel_.store(true);
+    if (worker_.joinable()) worker_.join();
+  }
+
+  int count() const { return count_; }
+
+  // Landmarks whose bounds hold on `grid`, or null (then making them is under way).
+  std::shared_ptr<const Landmarks> usableFor(const CostGrid& grid) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (ready_ && ready_->holdsFor(grid)) return ready_;
+    if (computing_) return nullptr;
+    if (worker_.joinable()) worker_.join();  // finished: it cleared computing_
+    computing_ = true;
+    auto floor = std::make_shared<CostGrid>(grid);
+    if (ready_ && sameShape(ready_->grid(), grid)) cheapestOf(ready_->grid(), *floor);
+    worker_ = std::thread([this, floor] {
+      std::shared_ptr<const Landmarks> made = Landmarks::compute(*floor, count_, &cancel_);
+      std::lock_guard<std::mutex> done(mutex_);
+      if (made) ready_ = std::move(made);
+      computing_ = false;
+    });
+    return nullptr;
+  }
+
+  // Waits until the landmarks under way (if any) are made.
+  void wait() {
+    std::thread worker;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      worker.swap(worker_);
+    }
+    if (worker.joinable()) worker.join();
+  }
+
+ private:
+  static bool sameShape(const CostGrid& a, const CostGrid& b) {
+    return a.width() == b.width() && a.height() == b.height() && a.allowCornerCutting() == b.allowCornerCutting() &&
+           a.costRule().neutral_cost == b.costRule().neutral_cost && a.costRule().cost_factor == b.costRule().cost_factor;
+  }
+  // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest).
+  static void cheapestOf(const CostGrid& other, CostGrid& into) {
+    for (std::size_t i = 0; i < into.cellCount(); ++i) {
+      const Cell c = into.cellAt(i);
+      const std::uint8_t was = other.cellBytes()[i];
+      if (was < into.cellBytes()[i]) {
+        into.setBlocked(c, false);
+        into.setCost(c, was);
+      }
+    }
+  }
+
+  const int count_;
+  std::mutex mutex_;
+  std::shared_ptr<const Landmarks> ready_;  // under mutex_
+  bool computing_ = false;                  // under mutex_
+  std::thread worker_;
+  std::atomic<bool> cancel_{false};
+};
+
+}  // namespace eaci
