@@ -1,6 +1,7 @@
 // Google Benchmark of the colony's hot loops on the paper's 50 x 50 map (corner cutting
 // allowed, the paper's parameters): one ant's walk, one pheromone update, one iteration; and of
-// the exact grid search (A*, the Dijkstra cost field) on a generated 1024 x 1024 building.
+// the exact grid search (A*, the search that meets in the middle with and without landmarks,
+// making landmarks, the Dijkstra cost field) on a generated 1024 x 1024 building.
 //   build/bin/eaci_microbench [--benchmark_filter=...]
 // The map is read from $EACI_MAPS_DIR (default maps/paper).
 #include <benchmark/benchmark.h>
@@ -142,6 +143,35 @@ void BM_AStarBuildingWorkspace(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "1024 x 1024, corner to corner" : "1024 x 1024, short route");
 }
 BENCHMARK(BM_AStarBuildingWorkspace)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The search that meets in the middle (geodesic islands' route on large maps), corner to
+// corner on one thread, with arg landmarks kept (made before the timing starts): its time and
+// the cells it takes off its open lists.
+void BM_MeetingSearchBuilding(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  const eaci::Cell start{3, 3}, goal{1020, 1020};
+  eaci::GridSearchWorkspace workspace;
+  workspace.useLandmarks(static_cast<int>(state.range(0)));
+  workspace.cheapestRouteBetween(grid, start, start);
+  if (workspace.landmarkCache() != nullptr) workspace.landmarkCache()->wait();
+  for (auto _ : state) {
+    const eaci::CellPath route = workspace.cheapestRouteBetween(grid, start, goal);
+    benchmark::DoNotOptimize(route.data());
+  }
+  state.counters["cells"] = static_cast<double>(workspace.expandedCells());
+  state.SetLabel("1024 x 1024, corner to corner, " + std::to_string(state.range(0)) + " landmarks");
+}
+BENCHMARK(BM_MeetingSearchBuilding)->Arg(0)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+
+// Making arg landmarks on the building (what the ROS plugin does once per costmap, in the background).
+void BM_LandmarksBuilding(benchmark::State& state) {
+  const eaci::CostGrid& grid = buildingGrid();
+  for (auto _ : state) {
+    const auto landmarks = eaci::Landmarks::compute(grid, static_cast<int>(state.range(0)));
+    benchmark::DoNotOptimize(landmarks.get());
+  }
+}
+BENCHMARK(BM_LandmarksBuilding)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 
 // The Dijkstra cost field of the whole building (every free cell settled).
 void BM_CostFieldBuilding(benchmark::State& state) {

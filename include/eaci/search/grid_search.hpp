@@ -458,6 +458,7 @@ struct MeetingSide {
   std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
   const MeetingBounds* bounds;
   bool forward;
+  std::size_t taken = 0;  // cells taken off the open list (a cell labelled again counts again)
 
   // The window is the whole grid: a slot is the grid index. span / 2 keeps it >= 0.
   double priority(Cell c, std::uint32_t slot, double g) const {
@@ -468,12 +469,12 @@ struct MeetingSide {
   void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, slot, g), BucketEntry{g, slot}); }
 
   // Takes up to `cells` cells off the open list; labels only its own slots, reads nothing of
-  // the other side.
+  // the other side. Adds the cells it took to `taken`.
   void round(const CostGrid& grid, const CellWindow& window, const SearchNeighbourhood& around, int cells) {
     touched->clear();
     const auto is_stale = [this](const BucketEntry& e) { return stale(e); };
     BucketEntry top;
-    for (int n = 0; n < cells && open->pop(top, is_stale); ++n) {
+    for (int n = 0; n < cells && open->pop(top, is_stale); ++n, ++taken) {
       relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, !forward, labels,
                  [this](std::uint32_t j, Cell next, double g) {
                    touched->push_back(j);
@@ -605,6 +606,7 @@ class GridSearchWorkspace {
           }
         }
     }
+    expanded_ = sides[0].taken + sides[1].taken;
     if (cost != nullptr) *cost = mu;
     if (!std::isfinite(mu)) return route;
     route = routeTo(window_.cellAt(meeting));  // from the source to the meeting cell
@@ -628,6 +630,9 @@ class GridSearchWorkspace {
   }
   // The landmark cache (null without useLandmarks), e.g. to wait for landmarks under way.
   LandmarkCache* landmarkCache() { return landmarks_.get(); }
+
+  // The cells the last cheapestRouteBetween took off its two open lists (its work, for benchmarks).
+  std::size_t expandedCells() const { return expanded_; }
 
   const CellWindow& window() const { return window_; }
   double largestDistance() const { return largest_distance_; }  // over the settled cells
@@ -723,6 +728,7 @@ class GridSearchWorkspace {
   RoundCells touched_[2];
   std::unique_ptr<WorkerGroup> meeting_workers_;
   std::unique_ptr<LandmarkCache> landmarks_;  // useLandmarks
+  std::size_t expanded_ = 0;                   // expandedCells
   CellWindow window_;
   double largest_distance_ = 0.0;
   alignas(64) detail::SearchQueue open_;
