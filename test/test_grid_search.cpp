@@ -222,6 +222,33 @@ TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
   EXPECT_DOUBLE_EQ(workspace.at(Cell{0, 0}), 1.0);
 }
 
+namespace {
+
+// Asks both workspaces (one thread, two) for the route that meets in the middle and checks it
+// against the independent Dijkstra: the same route and cost from both, the Dijkstra's cost, a
+// route of allowed moves that costs that much. Returns whether a route exists.
+bool expectMeetingRouteAsDijkstraSays(const CostGrid& grid, Cell source, Cell target, GridSearchWorkspace& one_thread,
+                                      GridSearchWorkspace& two_threads) {
+  const double expected =
+      grid.isFree(target) ? referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)] : kInf;
+  double cost = 0.0, cost_two = 0.0;
+  const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
+  const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
+  EXPECT_EQ(route, route_two);
+  EXPECT_EQ(cost, cost_two);
+  if (std::isinf(expected)) {
+    EXPECT_TRUE(route.empty());
+    EXPECT_TRUE(std::isinf(cost));
+    return false;
+  }
+  EXPECT_NEAR(cost, expected, tolerance(expected));
+  EXPECT_EQ(eaci::test::routeDefect(grid, route, source, target), "");
+  EXPECT_NEAR(eaci::routeCost(grid, route), expected, tolerance(expected));
+  return true;
+}
+
+}  // namespace
+
 // The search that meets in the middle (geodesic islands' route on large maps): the cost of the
 // independent Dijkstra, a route of allowed moves that costs that much, and the same route on
 // one thread and on two. Maps up to 45 x 45 take one round; the 200 x 200 ones many.
@@ -236,21 +263,7 @@ TEST(GridSearch, RouteThatMeetsInTheMiddleCostsWhatAnIndependentDijkstraSays) {
       const Cell source = randomCell(rng, grid);
       const Cell target = k == 2 ? source : randomCell(rng, grid);
       SCOPED_TRACE("seed " + std::to_string(seed) + ", request " + std::to_string(k));
-      const double expected = grid.isFree(target) ? referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)] : kInf;
-      double cost = 0.0, cost_two = 0.0;
-      const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
-      const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
-      EXPECT_EQ(route, route_two);
-      EXPECT_EQ(cost, cost_two);
-      if (std::isinf(expected)) {
-        EXPECT_TRUE(route.empty());
-        EXPECT_TRUE(std::isinf(cost));
-        continue;
-      }
-      ++routes;
-      EXPECT_NEAR(cost, expected, tolerance(expected));
-      EXPECT_EQ(eaci::test::routeDefect(grid, route, source, target), "");
-      EXPECT_NEAR(eaci::routeCost(grid, route), expected, tolerance(expected));
+      if (expectMeetingRouteAsDijkstraSays(grid, source, target, one_thread, two_threads)) ++routes;
     }
   }
   EXPECT_GT(routes, 100);
@@ -438,19 +451,7 @@ TEST(Landmarks, RouteThatMeetsInTheMiddleWithLandmarksCostsWhatAnIndependentDijk
         w->landmarkCache()->wait();
       }
       SCOPED_TRACE("seed " + std::to_string(seed) + ", request " + std::to_string(k));
-      const double expected = referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)];
-      double cost = 0.0, cost_two = 0.0;
-      const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
-      const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
-      EXPECT_EQ(route, route_two);
-      if (std::isinf(expected)) {
-        EXPECT_TRUE(route.empty());
-        continue;
-      }
-      ++routes;
-      EXPECT_NEAR(cost, expected, tolerance(expected));
-      EXPECT_EQ(eaci::test::routeDefect(grid, route, source, target), "");
-      EXPECT_NEAR(eaci::routeCost(grid, route), expected, tolerance(expected));
+      if (expectMeetingRouteAsDijkstraSays(grid, source, target, one_thread, two_threads)) ++routes;
     }
   }
   EXPECT_GT(routes, 40);
