@@ -55,7 +55,8 @@ constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
 // keeps from plan to plan: the exact search's buffers (A*, and the cheapest route geodesic
 // islands sit on) and the colony's routes, walkers, worker threads, region and pheromone
 // memory. A plan then allocates and clears no whole-map search arrays, starts no threads and
-// reuses the memory of its region and pheromone field. One plan at a time per workspace.
+// reuses the memory of its region and pheromone field. One plan at a time per workspace; it
+// keeps the largest buffers a plan has needed (destroy it to give the memory back).
 struct PlannerWorkspace {
   GridSearchWorkspace search;
   ColonyWorkspace colony;

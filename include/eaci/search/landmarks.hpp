@@ -42,7 +42,6 @@ class Landmarks {
                                                   const std::atomic<bool>* cancel = nullptr) {
     auto landmarks = std::shared_ptr<Landmarks>(new Landmarks(grid));
     const std::uint8_t* cells = grid.cellBytes();
-    std::vector<std::size_t> free_cells_seen;
     std::size_t free_count = 0;
     for (std::size_t i = 0; i < grid.cellCount(); ++i) free_count += cells[i] != CostGrid::kObstacle;
     if (free_count == 0 || count <= 0) return nullptr;
