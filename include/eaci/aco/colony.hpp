@@ -50,13 +50,14 @@ inline int resolveThreadCount(int requested) {
   return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
-// The threads a colony walks its ants on: params.threads (0 = all cores), at most one per ant,
-// and one alone on a region of fewer than kCellsForWorkers cells, whose walks are too short to
-// pay for waking another thread (the result is the same on any number).
+// The threads a colony may walk its ants on: params.threads (0 = all cores), at most one per ant.
+inline int colonyThreads(const Parameters& params) { return std::min(resolveThreadCount(params.threads), params.ants); }
+// The threads it does walk them on: those, but one alone on a region of fewer than
+// kCellsForWorkers cells, whose walks are too short to pay for waking another thread (the
+// result is the same on any number).
 constexpr std::size_t kCellsForWorkers = 1024;
 inline int colonyWorkers(const Parameters& params, std::size_t region_cells) {
-  if (region_cells < kCellsForWorkers) return 1;
-  return std::min(resolveThreadCount(params.threads), params.ants);
+  return region_cells < kCellsForWorkers ? 1 : colonyThreads(params);
 }
 
 // What a colony keeps from one run to the next when its caller keeps it (the planner's
@@ -108,7 +109,7 @@ class Colony {
         workspace_(workspace != nullptr ? *workspace : own_workspace_), routes_(workspace_.routes),
         worker_state_(workspace_.worker_state),
         on_workers_(colonyWorkers(params, setup.region.size()) > 1) {
-    workspace_.prepare(params.ants, std::min(resolveThreadCount(params.threads), params.ants));
+    workspace_.prepare(params.ants, colonyThreads(params));
   }
 
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {

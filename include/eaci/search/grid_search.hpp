@@ -422,8 +422,9 @@ struct MeetingBounds {
   const float* target_marks = nullptr;
   double span = 0.0;  // a lower bound of the whole route's cost (the same from either end)
 
+  // `marks`: null, or landmarks that bound nothing (count 0), for the octile bound alone.
   MeetingBounds(Cell s, Cell t, std::size_t s_index, std::size_t t_index, const Landmarks* marks)
-      : source(s), target(t), landmarks(marks) {
+      : source(s), target(t), landmarks(marks != nullptr && marks->count() > 0 ? marks : nullptr) {
     span = octileDistance(s, t);
     if (landmarks == nullptr) return;
     source_marks = landmarks->of(s_index);
@@ -554,10 +555,10 @@ class GridSearchWorkspace {
     if (backward_.capacity < window_.size()) backward_.allocate(window_.size());
     CellPath route;
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
+    expanded_ = 0;
     if (!grid.isFree(source) || !grid.isFree(target)) return route;
     const std::shared_ptr<const Landmarks> landmarks = landmarks_ ? landmarks_->usableFor(grid) : nullptr;
-    const detail::MeetingBounds bounds(source, target, grid.index(source), grid.index(target),
-                                       landmarks && landmarks->count() > 0 ? landmarks.get() : nullptr);
+    const detail::MeetingBounds bounds(source, target, grid.index(source), grid.index(target), landmarks.get());
     const double span = bounds.span;
     detail::MeetingSide<Labels> sides[2] = {
         {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true},

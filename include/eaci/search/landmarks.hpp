@@ -85,16 +85,17 @@ class Landmarks {
   }
 
   int count() const { return count_; }
-  std::size_t cellCount() const { return floor_.cellCount(); }
 
-  // True when the bounds hold on `grid`: the same size, move rule and cost rule, and no cell
-  // cheaper than on the grid they were made on (or free where it was an obstacle).
+  // Grids of the same size, move rule and cost rule: their cells can be compared one by one.
+  static bool sameShape(const CostGrid& a, const CostGrid& b) {
+    return a.width() == b.width() && a.height() == b.height() && a.allowCornerCutting() == b.allowCornerCutting() &&
+           a.costRule().neutral_cost == b.costRule().neutral_cost && a.costRule().cost_factor == b.costRule().cost_factor;
+  }
+
+  // True when the bounds hold on `grid`: the same shape, and no cell cheaper than on the grid
+  // they were made on (or free where it was an obstacle).
   bool holdsFor(const CostGrid& grid) const {
-    if (grid.width() != floor_.width() || grid.height() != floor_.height() ||
-        grid.allowCornerCutting() != floor_.allowCornerCutting() ||
-        grid.costRule().neutral_cost != floor_.costRule().neutral_cost ||
-        grid.costRule().cost_factor != floor_.costRule().cost_factor)
-      return false;
+    if (!sameShape(grid, floor_)) return false;
     const std::uint8_t* now = grid.cellBytes();
     const std::uint8_t* then = floor_.cellBytes();
     std::uint8_t cheaper = 0;  // no early exit: the loop vectorises
@@ -110,14 +111,14 @@ class Landmarks {
   double lowerBound(std::size_t a, std::size_t b) const { return lowerBound(of(a), of(b)); }
   // The same from the landmark distances of the two cells (of()).
   double lowerBound(const float* a, const float* b) const {
-    float bound = 0.0f;
-    for (int k = 0; k < count_; ++k) bound = std::max(bound, std::abs(a[k] - b[k]));  // NaN (unreached) loses
-    return static_cast<double>(bound) * shrink_;
+    double bound = 0.0, same = 0.0;
+    lowerBounds(a, b, b, bound, same);
+    return bound;
   }
   // Both bounds of one cell at once: from cell `c` to `a` and to `b` (landmark distances of each).
   void lowerBounds(const float* c, const float* a, const float* b, double& to_a, double& to_b) const {
     float bound_a = 0.0f, bound_b = 0.0f;
-    for (int k = 0; k < count_; ++k) {
+    for (int k = 0; k < count_; ++k) {  // NaN (unreached) loses every std::max
       bound_a = std::max(bound_a, std::abs(c[k] - a[k]));
       bound_b = std::max(bound_b, std::abs(c[k] - b[k]));
     }
@@ -198,10 +199,12 @@ class LandmarkCache {
     if (computing_) return nullptr;
     if (worker_.joinable()) worker_.join();  // finished: it cleared computing_
     computing_ = true;
-    auto floor = std::make_shared<CostGrid>(grid);
-    if (ready_ && sameShape(ready_->grid(), grid)) cheapestOf(ready_->grid(), *floor);
-    worker_ = std::thread([this, floor] {
-      std::shared_ptr<const Landmarks> made = Landmarks::compute(*floor, count_, &cancel_);
+    // The floor is made on the worker thread too, from a copy of the grid and the landmarks
+    // held: the plan that asked waits for neither.
+    std::shared_ptr<const Landmarks> held = ready_;
+    worker_ = std::thread([this, floor = grid, held] () mutable {
+      if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor);
+      std::shared_ptr<const Landmarks> made = Landmarks::compute(floor, count_, &cancel_);
       std::lock_guard<std::mutex> done(mutex_);
       if (made) ready_ = std::move(made);
       computing_ = false;
@@ -220,19 +223,11 @@ class LandmarkCache {
   }
 
  private:
-  static bool sameShape(const CostGrid& a, const CostGrid& b) {
-    return a.width() == b.width() && a.height() == b.height() && a.allowCornerCutting() == b.allowCornerCutting() &&
-           a.costRule().neutral_cost == b.costRule().neutral_cost && a.costRule().cost_factor == b.costRule().cost_factor;
-  }
   // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest).
   static void cheapestOf(const CostGrid& other, CostGrid& into) {
     for (std::size_t i = 0; i < into.cellCount(); ++i) {
-      const Cell c = into.cellAt(i);
       const std::uint8_t was = other.cellBytes()[i];
-      if (was < into.cellBytes()[i]) {
-        into.setBlocked(c, false);
-        into.setCost(c, was);
-      }
+      if (was < into.cellBytes()[i]) into.setCost(into.cellAt(i), was);  // `was` is a cost, not an obstacle
     }
   }
 
