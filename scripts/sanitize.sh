@@ -18,15 +18,20 @@ configure() {  # configure BUILD_DIR SANITIZERS
 if [ "$what" = asan ] || [ "$what" = all ]; then
   echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer (build/asan)"
   configure build/asan address,undefined
-  cmake --build build/asan -j"$jobs" --target eaci_tests eaci_plan
+  cmake --build build/asan -j"$jobs" --target eaci_tests eaci_plan test_planning_service \
+    test_planning_service_memory test_costmap_replay
+  # Wall-clock checks (the 1 ms limit on 4 M cells) belong to the plain build.
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build/asan --output-on-failure -j"$jobs" -E '^PaperMaps\.'
+    ctest --test-dir build/asan --output-on-failure -j"$jobs" -E '^PaperMaps\.|OneMillisecondLimit'
 fi
 
 if [ "$what" = tsan ] || [ "$what" = all ]; then
   echo "sanitize: ThreadSanitizer on the multi-threaded solver tests (build/tsan)"
   configure build/tsan thread
-  cmake --build build/tsan -j"$jobs" --target eaci_tests
+  cmake --build build/tsan -j"$jobs" --target eaci_tests test_planning_service
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
     build/tsan/bin/eaci_tests --gtest_filter='PlannerDeterminism.*:PlannerThreads.*:Landmarks.*'
+  # The planning service: plans, reconfigures and cancels from many threads at once.
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+    build/tsan/bin/test_planning_service --gtest_filter='PlanningServiceThreads.*:PlanningService.Cancel*:PlanningService.SavedCostmaps*'
 fi

@@ -4,6 +4,7 @@
 
 #include <boost/any.hpp>
 
+#include <charconv>
 #include <limits>
 #include <sstream>
 
@@ -51,15 +52,34 @@ std::string applyConfig(const PlannerConfig& config, eaci::Parameters& params, R
   return rosValidationError(params, options);
 }
 
+std::string applyConfig(const PlannerConfig& config, const PlannerConfig& previous, eaci::Parameters& params,
+                        RosPlannerOptions& options) {
+  const auto before = configValues(previous);
+  const auto now = configValues(config);
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    if (i < before.size() && before[i] == now[i]) continue;
+    try {
+      setRosParameter(params, options, now[i].first, now[i].second);
+    } catch (const eaci::ParameterError& e) {
+      return e.what();
+    }
+  }
+  return rosValidationError(params, options);
+}
+
 void storeInConfig(const eaci::Parameters& params, const RosPlannerOptions& options, PlannerConfig& config) {
   dynamic_reconfigure::Config message;
   for (const auto& description : PlannerConfig::__getParamDescriptions__()) {
     const std::string& name = description->name;
     const std::string text = rosParameterText(params, options, name);
     if (description->type == "int") {
-      // The seed is the only one wider than an int: a seed above INT_MAX keeps the config's.
-      const long long value = std::stoll(text);
-      if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) continue;
+      // The seed is the only one wider than an int (0..2^64-1): one above INT_MAX keeps the
+      // config's (parsed without exceptions: stoll throws above 2^63).
+      long long value = 0;
+      const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (status != std::errc() || end != text.data() + text.size() || value < std::numeric_limits<int>::min() ||
+          value > std::numeric_limits<int>::max())
+        continue;
       dynamic_reconfigure::IntParameter p;
       p.name = name;
       p.value = static_cast<int>(value);
@@ -67,7 +87,7 @@ void storeInConfig(const eaci::Parameters& params, const RosPlannerOptions& opti
     } else if (description->type == "double") {
       dynamic_reconfigure::DoubleParameter p;
       p.name = name;
-      p.value = std::stod(text);
+      p.value = eaci::detail::parseDouble(name, text);
       message.doubles.push_back(p);
     } else if (description->type == "bool") {
       dynamic_reconfigure::BoolParameter p;

@@ -26,6 +26,12 @@ std::string configValue(const PlannerConfig& config, const std::string& name);
 // of the first bad parameter (then `params` and `options` are partly set: use copies).
 std::string applyConfig(const PlannerConfig& config, eaci::Parameters& params, RosPlannerOptions& options);
 
+// The same for the parameters whose value in `config` differs from `previous` (the config as
+// last applied): a value the config cannot hold (a seed above INT_MAX) is kept until the user
+// changes that parameter.
+std::string applyConfig(const PlannerConfig& config, const PlannerConfig& previous, eaci::Parameters& params,
+                        RosPlannerOptions& options);
+
 // Sets every parameter `config` holds to its value in `params` and `options` (a seed wider
 // than an int, which the config cannot hold, leaves the config's).
 void storeInConfig(const eaci::Parameters& params, const RosPlannerOptions& options, PlannerConfig& config);

@@ -15,7 +15,6 @@
 #include <thread>
 
 #include "eaci/io/map_io.hpp"
-#include "grid_planner.hpp"
 #include "route_check.hpp"
 
 namespace {
@@ -179,52 +178,6 @@ TEST_F(PlannerCancel, ConcurrentPlansRunOneAtATimeAndEachCanBeCancelled) {
   const auto after = planInBackground(kShort);
   ASSERT_EQ(after.wait_for(std::chrono::seconds(60)), std::future_status::ready);
   EXPECT_FALSE(after.get().plan.poses.empty());
-}
-
-// planOnGrid itself (what the node and the plugin call), in this process: ROS is up here, so only
-// the cancel flag stops the colony. Cancelled before the first iteration, no ant has arrived:
-// geodesic EACI answers with the cheapest route its islands sit on, the paper's islands with none.
-namespace {
-
-eaci_ros::GridPlan planLabRoute(const eaci::Parameters& params, const std::atomic<bool>& cancel) {
-  std::string file;
-  EXPECT_TRUE(ros::param::get("~map_file", file));
-  const nav_msgs::OccupancyGrid grid = eaci_ros::toOccupancyGrid(eaci::loadMap(file), "map");
-  const eaci::GridView view = eaci_ros::viewOf(grid, 65, true);
-  eaci_ros::RosPlannerOptions options;
-  options.max_planning_time = 0;
-  return eaci_ros::planOnGrid(view, eaci_ros::frameOf(grid), pose(0.425, 0.425), pose(4.425, 2.625), 0.0, params,
-                              options, &cancel);
-}
-
-}  // namespace
-
-TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIslands) {
-  const std::atomic<bool> cancel{true};
-  const auto cancelled = planLabRoute(eaci::Parameters{}, cancel);
-  EXPECT_TRUE(cancelled.ok) << cancelled.error;
-  EXPECT_FALSE(cancelled.path.poses.empty());
-  EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
-  EXPECT_EQ(cancelled.result.iterations_run, 0);
-  EXPECT_TRUE(cancelled.result.route_from_search);
-}
-
-TEST(PlanOnGrid, ACancelBeforeAnyAntArrivesGivesNoRouteAndSaysWhy) {
-  eaci::Parameters params;
-  params.island_strategy = eaci::IslandStrategy::kPaper;  // no search route to fall back on
-  std::atomic<bool> cancel{true};
-  const auto cancelled = planLabRoute(params, cancel);
-  EXPECT_FALSE(cancelled.ok);
-  EXPECT_TRUE(cancelled.path.poses.empty());
-  EXPECT_EQ(cancelled.stopped_by, eaci_ros::StopReason::kCancelled);
-  EXPECT_EQ(cancelled.result.iterations_run, 0);
-  EXPECT_NE(cancelled.error.find("cancelled after 0 iterations, before any ant reached the goal"), std::string::npos)
-      << cancelled.error;
-  cancel = false;
-  const auto planned = planLabRoute(params, cancel);
-  EXPECT_TRUE(planned.ok) << planned.error;
-  EXPECT_EQ(planned.stopped_by, eaci_ros::StopReason::kNone);
-  EXPECT_EQ(planned.result.iterations_run, params.max_iterations);
 }
 
 int main(int argc, char** argv) {

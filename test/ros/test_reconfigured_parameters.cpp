@@ -33,9 +33,9 @@ TEST(ReconfigureConfig, HoldsEveryTableParameterButCornerCuttingAndTheRunTimeRos
   EXPECT_EQ(configNames(), expected);
 }
 
-TEST(ReconfigureConfig, DefaultsAreThePapersAndTheRosLayers) {
+TEST(ReconfigureConfig, DefaultsAreTheRobotReadyOnes) {
   const PlannerConfig config = PlannerConfig::__getDefault__();
-  const eaci::Parameters paper;  // the table's defaults
+  const eaci::Parameters paper = eaci_ros::rosDefaultParameters();  // the paper's colony, robot-ready
   EXPECT_EQ(config.ants, paper.ants);
   EXPECT_EQ(config.max_iterations, paper.max_iterations);
   EXPECT_EQ(config.alpha, paper.alpha);

@@ -72,12 +72,12 @@ ReplayFiles saveCostmapForReplay(const std::string& directory, const std::string
                     shellQuoted(files.params_yaml);
     if (request->tolerance > 0) files.command += " --tolerance " + eaci::exactNumber(request->tolerance);
     comments.push_back("request: start (" + xy(request->start) + ") m, goal (" + xy(request->goal) + ") m, tolerance " +
-                       eaci::exactNumber(request->tolerance) + " m, in frame " + costmap.frame.frame_id);
+                       eaci::exactNumber(request->tolerance) + " m, in frame " + costmap.frame_id);
     comments.push_back(request->outcome);
     comments.push_back("replay: " + files.command);
   }
   const eaci::GridView cells(costmap.cells.data(), costmap.frame.width, costmap.frame.height,
-                             eaci::RowOrder::kBottomFirst);
+                             costmap.order);
   const eaci::SavedMapFiles saved = eaci::saveRawMap(files.map_yaml, cells, costmap.frame, comments);
   files.map_image = saved.image_path;
   return files;

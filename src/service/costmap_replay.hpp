@@ -12,15 +12,9 @@
 
 #include "eaci/aco/parameters.hpp"
 #include "eaci/planner.hpp"
-#include "grid_conversion.hpp"
+#include "costmap_snapshot.hpp"
 
 namespace eaci_ros {
-
-// A copy of a costmap_2d char map (bottom row first) and where it lies.
-struct CostmapSnapshot {
-  std::vector<std::uint8_t> cells;
-  MapFrame frame;
-};
 
 // One plan request in the map frame and what came of it.
 struct PlanRecord {

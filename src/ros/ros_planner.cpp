@@ -1,0 +1,167 @@
+#include "ros_planner.hpp"
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
+
+#include <utility>
+
+#include "grid_conversion.hpp"
+
+namespace eaci_ros {
+namespace {
+
+void logLine(LogLevel level, const std::string& line) {
+  switch (level) {
+    case LogLevel::kDebug: ROS_DEBUG("%s", line.c_str()); break;
+    case LogLevel::kInfo: ROS_INFO("%s", line.c_str()); break;
+    case LogLevel::kWarn: ROS_WARN("%s", line.c_str()); break;
+    case LogLevel::kError: ROS_ERROR("%s", line.c_str()); break;
+  }
+}
+
+MapFrame rosFrame(const PlanReply& reply) {
+  MapFrame frame;
+  static_cast<eaci::MapFrame&>(frame) = reply.frame;
+  frame.frame_id = reply.frame_id;
+  return frame;
+}
+
+}  // namespace
+
+RosPlanner::RosPlanner(const ros::NodeHandle& private_nh, Setup setup) : setup_(std::move(setup)) {
+  ServiceSettings settings;
+  settings.who = setup_.who;
+  private_nh.param("save_costmap_dir", settings.save_costmap_dir, std::string("/tmp"));
+  private_nh.param("save_costmap_on_failure", settings.save_costmap_on_failure, false);
+  private_nh.param("save_costmap_keep", settings.save_costmap_keep, 10);
+  settings.shutting_down = [] { return !ros::ok() || ros::isShuttingDown(); };
+  service_ = std::make_unique<PlanningService>(std::move(settings), &logLine);
+  config_ = std::make_unique<PlannerConfiguration>(
+      private_nh, setup_.who,
+      [this](const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& error) {
+        service_->configure(params, options, error);
+      });
+  ros::NodeHandle nh(private_nh);
+  plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, setup_.latch_plan);
+  pheromone_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
+  make_plan_service_ = nh.advertiseService("make_plan", &RosPlanner::onMakePlan, this);
+  save_costmap_service_ = nh.advertiseService("save_costmap", &RosPlanner::onSaveCostmap, this);
+  ros::NodeHandle cancel_nh(private_nh);
+  cancel_nh.setCallbackQueue(&cancel_queue_);
+  cancel_service_ = cancel_nh.advertiseService("cancel", &RosPlanner::onCancel, this);
+  cancel_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &cancel_queue_);
+  cancel_spinner_->start();
+  const PlanningService::Configuration config = service_->configuration();
+  ROS_INFO("%s: %s, %d ants x %d iterations, N = %d, %s islands, max_planning_time %.2f s%s", setup_.who.c_str(),
+           eaci::toString(config.options.algorithm), config.params.ants, config.params.max_iterations,
+           config.params.islands, eaci::toString(config.params.island_strategy), config.options.max_planning_time,
+           config.error.empty() ? "" : " (but a parameter is bad: no plans until it is fixed)");
+}
+
+RosPlanner::~RosPlanner() {
+  if (cancel_spinner_) cancel_spinner_->stop();
+  if (service_) service_->cancel();
+}
+
+bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                          double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+  try {
+    plan.clear();
+    CostmapSnapshot costmap = setup_.costmap();
+    for (const auto* pose : {&start, &goal}) {
+      if (pose->header.frame_id != costmap.frame_id) {
+        ROS_ERROR("%s: the %s is in frame '%s', the costmap in '%s'", setup_.who.c_str(),
+                  pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), costmap.frame_id.c_str());
+        return false;
+      }
+    }
+    PlanRequest request;
+    request.start = {start.pose.position.x, start.pose.position.y};
+    request.goal = {goal.pose.position.x, goal.pose.position.y};
+    request.tolerance = tolerance;
+    request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
+    const PlanReply reply = service_->plan(std::move(costmap), request);
+    if (!reply.ok) return false;  // the service said why
+    geometry_msgs::PoseStamped target = goal;
+    target.pose.position.x = reply.goal.x();
+    target.pose.position.y = reply.goal.y();
+    const MapFrame frame = rosFrame(reply);
+    const nav_msgs::Path path =
+        toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode);
+    plan = path.poses;
+    if (reply.options.publish_plan) plan_pub_.publish(path);
+    if (!reply.result.pheromone.empty())
+      pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
+    return true;
+  } catch (const std::exception& e) {
+    plan.clear();
+    try {
+      ROS_ERROR("%s: no plan: %s", setup_.who.c_str(), e.what());
+    } catch (...) {
+    }
+  } catch (...) {
+    plan.clear();
+  }
+  return false;
+}
+
+bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
+  try {
+    std::string frame;
+    try {
+      frame = setup_.costmap().frame_id;
+    } catch (const std::exception& e) {
+      ROS_ERROR("%s: make_plan: %s", setup_.who.c_str(), e.what());
+      return true;
+    }
+    response.plan.header.frame_id = frame;
+    response.plan.header.stamp = ros::Time::now();
+    geometry_msgs::PoseStamped start = request.start, goal = request.goal;
+    std::string error;
+    for (auto* pose : {&start, &goal}) {
+      if (pose->header.frame_id.empty() || pose->header.frame_id == frame) {
+        pose->header.frame_id = frame;
+      } else if (!setup_.transform || !setup_.transform(geometry_msgs::PoseStamped(*pose), frame, *pose, error)) {
+        ROS_ERROR("%s: make_plan: the %s is in frame '%s', the costmap in '%s'%s%s", setup_.who.c_str(),
+                  pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), frame.c_str(),
+                  error.empty() ? "" : ": ", error.c_str());
+        return true;
+      }
+    }
+    // The request's own tolerance when > 0, else default_tolerance.
+    makePlan(start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
+  } catch (const std::exception& e) {
+    ROS_ERROR("%s: make_plan: %s", setup_.who.c_str(), e.what());
+  } catch (...) {
+  }
+  return true;
+}
+
+bool RosPlanner::onCancel(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  try {
+    response.success = service_->cancel();
+    response.message = response.success ? "cancelling the plan in progress: it stops with the best route so far"
+                                         : "no plan in progress";
+    ROS_INFO("%s: cancel: %s", setup_.who.c_str(), response.message.c_str());
+  } catch (...) {
+  }
+  return true;
+}
+
+bool RosPlanner::onSaveCostmap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  try {
+    ReplayFiles files;
+    const std::string error = service_->saveCostmap(setup_.costmap(), files);
+    response.success = error.empty() && !files.map_yaml.empty();
+    response.message = response.success ? files.map_yaml + (files.command.empty() ? "" : "; replay: " + files.command)
+                                        : (error.empty() ? "cannot save the costmap" : error);
+  } catch (const std::exception& e) {
+    response.success = false;
+    response.message = e.what();
+  } catch (...) {
+    response.success = false;
+  }
+  return true;
+}
+
+}  // namespace eaci_ros

@@ -1,0 +1,69 @@
+// What a ROS planner (the move_base plugin, the planner node) plans with besides the core's
+// parameters: the ROS options global_planner users know, their text forms and ranges, and the
+// robot-ready defaults. No ROS headers: the planning service and its tests use it without ROS.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "eaci/aco/parameters.hpp"
+#include "eaci/path/orientation.hpp"
+#include "eaci/planner.hpp"
+
+namespace eaci_ros {
+
+struct RosPlannerOptions {
+  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | astar
+  double default_tolerance = 0.0;   // m: a goal in an obstacle moves to the nearest free cell within it
+  int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
+  bool publish_plan = true;
+  double max_planning_time = 5.0;   // s; the best route so far is returned when it runs out; 0 = no limit
+  bool visualize_pheromone = false; // publish the final pheromone as a nav_msgs/OccupancyGrid
+  double robot_radius = 0.0;        // m, planner node only: obstacles grow by it (the plugin has the costmap's inflation)
+  // Planner node only, costmap_2d's inflation layer on the map it plans on: with inflation_radius > 0,
+  // cells within robot_radius of an obstacle are inscribed obstacles (253) and cells out to
+  // inflation_radius cost 252 x exp(-cost_scaling_factor x (distance - robot_radius)), so routes keep off walls.
+  double inflation_radius = 0.0;    // m; 0 = no costs, obstacles grown by robot_radius only
+  double cost_scaling_factor = 10.0;  // 1/m, costmap_2d's default
+  eaci::OrientationMode orientation_mode = eaci::OrientationMode::kForward;  // global_planner's ~orientation_mode
+  // Landmarks kept for the island route's search on maps from 256 x 256 cells (eaci::LandmarkCache):
+  // made in the background after the first plan on a costmap, 4 bytes a cell each; 0 = none.
+  int landmarks = 4;
+};
+
+// The core parameters a robot plans with when its configuration sets none (the move_base
+// plugin and the planner node from one line of configuration): the paper's colony (m = 50,
+// Nc_max = 100, alpha, beta, Q, kappa, lambda, epsilon) made robot-ready: allow_unknown true
+// (as navfn and global_planner), smooth_path true (a robot drives the smoothed route), early
+// stopping after 10 iterations without a cheaper route or once within 1 % of the cheapest
+// route (stop_gap 0.01), all cores (threads 0), ants within 4 moves of the cheapest route
+// (region_margin 4). config/eaci_planner.yaml writes the same values out; the paper's own
+// protocol (every iteration, one thread) is config/paper_benchmark.yaml and the core's
+// eaci::Parameters{} (the CLI's and the benchmarks' defaults).
+eaci::Parameters rosDefaultParameters();
+
+// The parameters of rosDefaultParameters() that differ from the paper's (eaci::Parameters{}),
+// as "name value" pairs, for the start-up log line.
+std::string robotDefaultsSummary();
+
+// The names of the ROS options above (algorithm, default_tolerance, ...).
+const std::vector<std::string>& rosOptionNames();
+
+// Sets one core parameter (eaci::setParameter) or ROS option by name from its text form.
+// Throws eaci::ParameterError with a sentence starting with the name for an unknown name or a
+// value of the wrong type; ranges are rosValidationError()'s job.
+void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
+                     const std::string& text);
+
+// The value of a core parameter or ROS option in the text form setRosParameter() reads back
+// (numbers exact, orientation_mode as global_planner's number). Throws eaci::ParameterError for
+// an unknown name.
+std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& name);
+
+// "" when every value is in range, else one sentence starting with the parameter's name.
+std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options);
+
+// The parameter a sentence of setRosParameter() or rosValidationError() is about ("" if none).
+std::string parameterNamedIn(const std::string& sentence);
+
+}  // namespace eaci_ros

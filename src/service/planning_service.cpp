@@ -1,0 +1,331 @@
+#include "planning_service.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <new>
+#include <sstream>
+#include <utility>
+
+#include "eaci/grid/nearest_free.hpp"
+#include "eaci/io/text.hpp"
+#include "start_cell.hpp"
+
+namespace eaci_ros {
+namespace {
+
+std::string where(const Eigen::Vector2d& p) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%.3f, %.3f)", p.x(), p.y());
+  return text;
+}
+
+std::string sizeOf(const eaci::MapFrame& frame) {
+  return std::to_string(frame.width) + " x " + std::to_string(frame.height) + " cells";
+}
+
+// Costmaps larger than this are refused: 32-bit cell indices, and the planner's per-cell
+// buffers (a few tens of bytes a cell) must fit a robot's memory.
+constexpr std::size_t kMaxCostmapCells = std::size_t{1} << 30;  // TODO(core): eaci::kMaxGridCells
+constexpr std::size_t kMaxLandmarkBytes = std::size_t{256} << 20;  // TODO(core)
+int landmarksThatFit(std::size_t cells, int requested) {
+  if (cells == 0) return requested;
+  return static_cast<int>(std::min<std::size_t>(requested, kMaxLandmarkBytes / (4 * cells)));
+}
+
+}  // namespace
+
+const char* toString(StopReason reason) {
+  switch (reason) {
+    case StopReason::kNone: return "not stopped";
+    case StopReason::kTimeLimit: return "max_planning_time ran out";
+    case StopReason::kCancelled: return "cancelled";
+    case StopReason::kShutdown: return "shutting down";
+  }
+  return "?";
+}
+
+PlanningService::PlanningService(ServiceSettings settings, Logger log)
+    : settings_(std::move(settings)), log_(std::move(log)) {
+  config_.params = rosDefaultParameters();
+  writer_ = std::make_unique<ReplayWriter>(settings_.save_costmap_dir, settings_.save_costmap_keep,
+                                           [this](const std::string& line, bool ok) {
+                                             say(ok ? LogLevel::kInfo : LogLevel::kError, line);
+                                           });
+}
+
+PlanningService::~PlanningService() {
+  cancel();
+  std::lock_guard<std::timed_mutex> lock(workspace_mutex_);  // a plan still running ends first
+  workspace_.reset();
+  writer_.reset();
+}
+
+void PlanningService::say(LogLevel level, const std::string& line) const noexcept {
+  try {
+    if (log_) log_(level, settings_.who + ": " + line);
+  } catch (...) {  // a log line is not worth a failed plan
+  }
+}
+
+void PlanningService::configure(const eaci::Parameters& params, const RosPlannerOptions& options,
+                                const std::string& error) noexcept {
+  try {
+    Configuration config{params, options, error};
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    config_ = std::move(config);
+  } catch (...) {
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    config_.error = "the new parameters could not be stored (out of memory)";
+  }
+}
+
+PlanningService::Configuration PlanningService::configuration() const {
+  std::lock_guard<std::mutex> lock(config_mutex_);
+  return config_;
+}
+
+bool PlanningService::cancel() noexcept {
+  try {
+    return cancellation_.cancel();
+  } catch (...) {
+    return false;
+  }
+}
+
+PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& request) noexcept {
+  const auto started = std::chrono::steady_clock::now();
+  PlanReply reply;
+  const auto fail = [&](const std::string& why) noexcept {
+    try {
+      reply = PlanReply();
+      reply.error = why;
+      say(LogLevel::kError, why);
+    } catch (...) {
+    }
+  };
+  try {
+    const Configuration config = configuration();
+    if (!config.error.empty()) {
+      reply.error = config.error + ": refusing to plan until it is fixed";
+      say(LogLevel::kError, reply.error);
+      return reply;
+    }
+    // Asked by every loop of the plan that grows with the map, on any of its threads.
+    const double limit = config.options.max_planning_time;
+    const bool timed = limit > 0;
+    const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(timed ? limit : 0.0));
+    std::atomic<int> stop_reason{static_cast<int>(StopReason::kNone)};
+    const std::atomic<bool>& cancelled = *cancellation_.flag();
+    const std::function<bool()> should_stop = [&]() {
+      if (stop_reason.load(std::memory_order_relaxed) != static_cast<int>(StopReason::kNone)) return true;
+      StopReason reason = StopReason::kNone;
+      if (settings_.shutting_down && settings_.shutting_down()) reason = StopReason::kShutdown;
+      else if (cancelled.load(std::memory_order_relaxed)) reason = StopReason::kCancelled;
+      else if (timed && std::chrono::steady_clock::now() >= deadline) reason = StopReason::kTimeLimit;
+      if (reason == StopReason::kNone) return false;
+      int none = static_cast<int>(StopReason::kNone);
+      stop_reason.compare_exchange_strong(none, static_cast<int>(reason));
+      return true;
+    };
+    std::unique_lock<std::timed_mutex> one_at_a_time(workspace_mutex_, std::defer_lock);
+    if (!timed) {
+      one_at_a_time.lock();
+    } else if (!one_at_a_time.try_lock_until(deadline)) {
+      reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
+      say(LogLevel::kWarn, reply.error);
+      return reply;
+    }
+    const PlanCancellation::Scope in_progress(cancellation_);
+    reply = planLocked(costmap, request, config, should_stop, stop_reason);
+  } catch (const std::bad_alloc&) {
+    workspace_suspect_.store(true);
+    fail("out of memory while planning (std::bad_alloc): no plan; the planner's buffers are made afresh for the next one");
+  } catch (const std::exception& e) {
+    workspace_suspect_.store(true);
+    fail(std::string("planning failed: ") + e.what());
+  } catch (...) {
+    workspace_suspect_.store(true);
+    fail("planning failed with an unknown exception");
+  }
+  return reply;
+}
+
+PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
+                                      const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
+  if (workspace_suspect_.exchange(false) || !workspace_) {
+    workspace_.reset();
+    workspace_ = std::make_unique<eaci::PlannerWorkspace>();
+    landmarks_in_use_ = -1;
+  }
+  const eaci::Parameters& params = config.params;
+  const RosPlannerOptions& options = config.options;
+  PlanReply reply;
+  reply.options = options;
+  reply.frame = costmap.frame;
+  reply.frame_id = costmap.frame_id;
+  reply.goal = request.goal;
+  const double tolerance = request.tolerance >= 0 ? request.tolerance : options.default_tolerance;
+  PlanRecord record;
+  record.start = request.start;
+  record.goal = request.goal;
+  record.tolerance = tolerance;
+  const auto finish = [&](PlanReply& done) -> PlanReply& {
+    record.outcome = describeOutcome(done.ok, done.error, done.result, costmap.frame.resolution);
+    {
+      std::lock_guard<std::mutex> lock(last_plan_mutex_);
+      last_plan_ = record;
+    }
+    if (!done.ok) {
+      say(LogLevel::kWarn, done.error);
+      if (settings_.save_costmap_on_failure && !costmap.cells.empty()) {
+        ReplayJob job;
+        job.prefix = "eaci_failed_plan";
+        job.params = params;
+        job.algorithm = options.algorithm;
+        job.request = record;
+        job.notes = replayNotes("the costmap of a failed plan", config);
+        job.costmap = std::move(costmap);
+        if (!writer_->submit(std::move(job))) say(LogLevel::kWarn, "could not hand the failed plan's costmap to the writer");
+      }
+    }
+    return done;
+  };
+  const auto failure = [&](const std::string& why) -> PlanReply {
+    reply.error = why;
+    return finish(reply);
+  };
+
+  const eaci::MapFrame& frame = costmap.frame;
+  if (frame.width <= 0 || frame.height <= 0) return failure("the costmap is empty (" + sizeOf(frame) + ")");
+  if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
+    return failure("the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
+  const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
+  if (cell_count > kMaxCostmapCells)
+    return failure("the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
+                   std::to_string(kMaxCostmapCells) + " cells");
+  if (costmap.cells.size() != cell_count)
+    return failure("the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
+                   " it claims");
+
+  const auto start_cell = frame.worldToCell(request.start);
+  if (!start_cell) return failure("start " + where(request.start) + " is off the costmap");
+  const auto goal_cell = frame.worldToCell(request.goal);
+  if (!goal_cell) return failure("goal " + where(request.goal) + " is off the costmap");
+  eaci::CellInterpretation interpretation =
+      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
+  interpretation.unknown_value = kCostmapUnknown;
+  const StartCellCheck start_check = openStartCell(costmap, interpretation, *start_cell, should_stop);
+  if (!start_check.ok) return failure("start " + where(request.start) + ": " + start_check.error);
+  reply.start_cells_opened = start_check.cells_opened;
+  if (start_check.cells_opened > 0)
+    say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
+                             std::to_string(start_check.start_cost) + ", lethal_cost " +
+                             std::to_string(params.lethal_cost) + "): planning out of it by the cheapest way (" +
+                             std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
+
+  const eaci::GridView view(costmap.cells.data(), frame.width, frame.height, costmap.order, interpretation);
+  const auto reachable_goal = eaci::nearestFreeCell(view, *goal_cell, tolerance / frame.resolution);
+  if (!reachable_goal) {
+    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
+      return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) +
+                     " while looking for a free cell near the goal");
+    return failure("goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
+                   eaci::formatNumber(tolerance) + " m of it");
+  }
+
+  useLandmarksFor(costmap, options.landmarks);
+  eaci::PlanOptions plan_options;
+  plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
+  plan_options.workspace = workspace_.get();
+  plan_options.should_stop = [&should_stop](int) { return should_stop(); };
+  reply.result = eaci::plan(view, *start_cell, *reachable_goal, options.algorithm, params, plan_options);
+  if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
+  if (!reply.result.success()) {
+    if (!reply.result.interrupted) return failure(reply.result.error);
+    if (reply.stopped_by == StopReason::kTimeLimit)
+      return failure("no route found within max_planning_time (" + eaci::formatNumber(options.max_planning_time) + " s)");
+    return failure(std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
+                   " iterations, before a route was found");
+  }
+  if (!(*reachable_goal == *goal_cell)) reply.goal = frame.cellToWorld(*reachable_goal);
+  if (reply.stopped_by != StopReason::kNone)
+    say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
+                             std::to_string(reply.result.iterations_run) + " iterations: returning " +
+                             (reply.result.route_from_search ? "the cheapest route the islands sit on (no ant had arrived yet)"
+                                                             : "the best route so far"));
+  reply.ok = true;
+  return finish(reply);
+}
+
+void PlanningService::useLandmarksFor(const CostmapSnapshot& costmap, int requested) {
+  const eaci::MapFrame& frame = costmap.frame;
+  if (last_frame_ && last_frame_->width == frame.width && last_frame_->height == frame.height &&
+      last_frame_->resolution == frame.resolution) {
+    moves_in_a_row_ = last_frame_->origin != frame.origin ? moves_in_a_row_ + 1 : 0;
+  } else {
+    moves_in_a_row_ = 0;
+  }
+  last_frame_ = frame;
+  if (!rolling_ && requested > 0 && moves_in_a_row_ >= 2) {
+    rolling_ = true;
+    say(LogLevel::kInfo, "the costmap moves with the robot (a rolling window): no landmarks on it, they would be made "
+                         "again for every plan");
+  }
+  const std::size_t cells = costmap.cells.size();
+  const int fitting = landmarksThatFit(cells, requested);
+  const int count = rolling_ ? 0 : fitting;
+  if (count != landmarks_in_use_ && fitting < requested && !rolling_)
+    say(LogLevel::kWarn, std::to_string(requested) + " landmarks on " + sizeOf(frame) + " would need " +
+                             std::to_string(static_cast<unsigned long long>(requested) * cells * 4 / (1 << 20)) +
+                             " MiB: making " + std::to_string(fitting) + " (the cap is " +
+                             std::to_string(kMaxLandmarkBytes >> 20) + " MiB)");
+  landmarks_in_use_ = count;
+  workspace_->search.useLandmarks(count);
+}
+
+std::vector<std::string> PlanningService::replayNotes(const std::string& note, const Configuration& config) const {
+  return {"saved by " + settings_.who + ": " + note,
+          "costmap_2d costs: 0 free, 1..252 cost, 253/254 obstacles, 255 unknown (lethal_cost " +
+              std::to_string(config.params.lethal_cost) + ", allow_unknown " +
+              (config.params.allow_unknown ? "true" : "false") + ")",
+          "the planner's max_planning_time was " + eaci::formatNumber(config.options.max_planning_time) +
+              " s; the replay runs every iteration; a start in the inflated band was opened as the planner did"};
+}
+
+std::string PlanningService::saveCostmap(CostmapSnapshot costmap, ReplayFiles& files) noexcept {
+  try {
+    const Configuration config = configuration();
+    ReplayJob job;
+    job.prefix = "eaci_costmap";
+    job.params = config.params;
+    job.algorithm = config.options.algorithm;
+    {
+      std::lock_guard<std::mutex> lock(last_plan_mutex_);
+      job.request = last_plan_;
+    }
+    job.notes = replayNotes(job.request ? "the costmap when ~save_costmap was called; the request below is the last one planned"
+                                        : "the costmap when ~save_costmap was called; no plan had been asked for",
+                            config);
+    job.costmap = std::move(costmap);
+    files = writer_->writeNow(job);
+    say(LogLevel::kInfo, "saved the costmap as " + files.map_yaml + " (+ " + files.map_image + ", parameters " +
+                             files.params_yaml + ")" + (files.command.empty() ? "" : "; replay: " + files.command));
+    return "";
+  } catch (const std::exception& e) {
+    say(LogLevel::kError, std::string("cannot save the costmap: ") + e.what());
+    try {
+      return e.what();
+    } catch (...) {
+    }
+  } catch (...) {
+  }
+  try {
+    return "cannot save the costmap";
+  } catch (...) {
+    return {};  // not even the sentence fits: an empty reason still says it failed (files are empty)
+  }
+}
+
+}  // namespace eaci_ros

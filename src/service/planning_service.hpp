@@ -1,0 +1,134 @@
+// Everything a ROS global planner does between "here is a copy of the costmap's cells and its
+// frame" and "here is the route": the configuration in force, the planner's kept buffers and
+// landmarks, the time limit, cancellation, the robot's own cell, replay files on failure, and
+// an exception barrier. No ROS headers (dlux and nav2 split their planners the same way): the
+// move_base plugin and the planner node are adapters around it (src/ros/ros_planner.hpp), and
+// it is tested without ROS, under ThreadSanitizer, with injected allocation failures.
+//
+// Locks: plan() takes the workspace lock (one plan at a time), configure() and configuration()
+// a short configuration lock, cancel() the cancellation's own. None of them is held while
+// another is taken, none is held while the caller's costmap lock is taken (the caller copies
+// the costmap before it calls), and move_base may hold its costmap lock while it calls plan():
+// so no lock order between ours and the costmap's can close a cycle.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "costmap_replay.hpp"
+#include "costmap_snapshot.hpp"
+#include "eaci/planner.hpp"
+#include "plan_cancellation.hpp"
+#include "planner_options.hpp"
+#include "replay_writer.hpp"
+
+namespace eaci_ros {
+
+// Why a plan stopped before it was done.
+enum class StopReason { kNone, kTimeLimit, kCancelled, kShutdown };
+const char* toString(StopReason reason);
+
+enum class LogLevel { kDebug, kInfo, kWarn, kError };
+// Where the service's log lines go (the adapters: rosconsole). Called on the planning thread,
+// the replay writer's thread or a configuring thread; must be thread-safe.
+using Logger = std::function<void(LogLevel, const std::string&)>;
+
+// Fixed for the service's life (read once at start).
+struct ServiceSettings {
+  std::string who = "eaci_planner";  // starts every log line
+  std::string save_costmap_dir = "/tmp";
+  bool save_costmap_on_failure = false;  // save the costmap of every failed plan, off the planning thread
+  int save_costmap_keep = 10;            // newest replays kept per kind (0 = all)
+  std::function<bool()> shutting_down;   // e.g. !ros::ok(); asked like the time limit
+};
+
+struct PlanRequest {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();  // m, in the costmap's frame
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();
+  double tolerance = -1.0;  // m: a goal in an obstacle moves to the nearest free cell within it; < 0: default_tolerance
+  bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
+};
+
+struct PlanReply {
+  bool ok = false;
+  std::string error;            // one line when !ok
+  eaci::PlanResult result;      // the core's result; result.smoothed_path is the route a robot drives
+  eaci::MapFrame frame;         // the costmap's frame the cells are in
+  std::string frame_id;
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the free cell within tolerance
+  StopReason stopped_by = StopReason::kNone;
+  int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
+  RosPlannerOptions options;    // the options the plan was made with (orientation_mode, publish_plan, ...)
+};
+
+class PlanningService {
+ public:
+  PlanningService(ServiceSettings settings, Logger log);
+  ~PlanningService();
+  PlanningService(const PlanningService&) = delete;
+  PlanningService& operator=(const PlanningService&) = delete;
+
+  // The parameters later plans use. A non-empty `error` (one sentence naming the parameter)
+  // refuses every plan with it until a configuration without one arrives.
+  void configure(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& error) noexcept;
+  struct Configuration {
+    eaci::Parameters params;
+    RosPlannerOptions options;
+    std::string error;
+  };
+  Configuration configuration() const;
+
+  // Plans on `costmap` (moved in: the service owns and may change the copy, e.g. opening the
+  // robot's cell). Never throws: every failure, an allocation failure included, is a reply
+  // with !ok and the reason, and the next plan works. Returns within max_planning_time (the
+  // time spent waiting for another plan to finish counts), after ~cancel, or when
+  // settings.shutting_down says so, with the best route so far or a failure.
+  PlanReply plan(CostmapSnapshot costmap, const PlanRequest& request) noexcept;
+
+  // Asks the plan in progress to stop with the best route so far; false when none runs.
+  bool cancel() noexcept;
+
+  // Saves `costmap` with the last request planned and the configuration for replay (on the
+  // calling thread). "" and `files` filled, or the reason it failed.
+  std::string saveCostmap(CostmapSnapshot costmap, ReplayFiles& files) noexcept;
+
+ private:
+  PlanReply planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
+                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason);
+  void useLandmarksFor(const CostmapSnapshot& costmap, int requested);
+  void say(LogLevel level, const std::string& line) const noexcept;
+  std::vector<std::string> replayNotes(const std::string& note, const Configuration& config) const;
+
+  const ServiceSettings settings_;
+  const Logger log_;
+
+  mutable std::mutex config_mutex_;
+  Configuration config_;  // under config_mutex_
+
+  // One plan at a time; the workspace is made again after a plan that threw (its buffers may
+  // be half made).
+  std::timed_mutex workspace_mutex_;
+  std::unique_ptr<eaci::PlannerWorkspace> workspace_;  // under workspace_mutex_
+  std::atomic<bool> workspace_suspect_{false};         // a plan threw: make the workspace afresh
+  // Rolling-window costmaps (local costmaps) move every update: landmarks would never hold.
+  std::optional<eaci::MapFrame> last_frame_;  // under workspace_mutex_
+  int moves_in_a_row_ = 0;                    // under workspace_mutex_
+  bool rolling_ = false;                      // under workspace_mutex_
+  int landmarks_in_use_ = -1;                 // under workspace_mutex_; -1 = not yet logged
+
+  PlanCancellation cancellation_;
+
+  mutable std::mutex last_plan_mutex_;
+  std::optional<PlanRecord> last_plan_;  // under last_plan_mutex_
+
+  std::unique_ptr<ReplayWriter> writer_;
+};
+
+}  // namespace eaci_ros

@@ -1,0 +1,443 @@
+// The planning service (src/service/planning_service.hpp): what the move_base plugin and the
+// planner node do between a costmap copy and a route, tested without ROS: routes against
+// hand-computed optima, the robot's own cell, every bad input, the time limit, cancellation,
+// many threads at once (also under ThreadSanitizer), rolling windows and replay files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <future>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <unistd.h>
+
+#include "service_test_support.hpp"
+
+namespace {
+
+using namespace eaci_ros;
+using namespace eaci_ros::test;
+namespace fs = std::filesystem;
+
+struct Log {
+  std::mutex mutex;
+  std::vector<std::string> lines;
+  Logger logger() {
+    return [this](LogLevel, const std::string& line) {
+      std::lock_guard<std::mutex> lock(mutex);
+      lines.push_back(line);
+    };
+  }
+  int count(const std::string& part) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return static_cast<int>(std::count_if(lines.begin(), lines.end(),
+                                          [&](const std::string& l) { return l.find(part) != std::string::npos; }));
+  }
+};
+
+ServiceSettings settings() {
+  ServiceSettings s;
+  s.who = "test";
+  return s;
+}
+
+// Octile distance: the length of the shortest 8-connected route on an open grid.
+double octile(int dr, int dc) {
+  const int a = std::abs(dr), b = std::abs(dc);
+  return std::max(a, b) + (std::sqrt(2.0) - 1.0) * std::min(a, b);
+}
+
+TEST(PlanningService, AStarOnAnOpenCostmapIsTheOctileLength) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  const CostmapSnapshot costmap = openCostmap(30, 20);
+  const PlanReply reply = service.plan(costmap, request(costmap, {2, 3}, {17, 25}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(routeDefect(costmap, reply.result.path, {2, 3}, {17, 25}), "");
+  EXPECT_NEAR(reply.result.length, octile(15, 22), 1e-9);
+  EXPECT_NEAR(reply.result.cost, octile(15, 22), 1e-9);  // free cells: cost = length
+}
+
+TEST(PlanningService, EaciFindsAValidRouteBehindAWall) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration());
+  CostmapSnapshot costmap = openCostmap(40, 30);
+  for (int row = 0; row < 25; ++row) at(costmap, row, 20) = kCostmapLethal;  // a wall with a gap at the bottom
+  const PlanReply reply = service.plan(costmap, request(costmap, {2, 2}, {2, 37}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(routeDefect(costmap, reply.result.path, {2, 2}, {2, 37}), "");
+  // Down to row 25 and back: at least 2 x 23 rows and 35 columns of travel.
+  EXPECT_GE(reply.result.length, octile(23, 18) + octile(23, 17) - 1e-9);
+}
+
+// The robot stands two cells deep in a band three cells thick along a lethal wall (rows 1-3
+// inscribed, row 0 lethal): the way out is straight down, the start and the cell below it are
+// opened (2 cells), and the route leaves the band with its first two moves.
+TEST(PlanningService, AStartInTheInscribedBandPlansOutOfItByTheCheapestWay) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot costmap = openCostmap(20, 12);
+  for (int col = 0; col < 20; ++col) {
+    at(costmap, 0, col) = kCostmapLethal;
+    for (int row = 1; row <= 3; ++row) at(costmap, row, col) = kCostmapInscribed;
+  }
+  const PlanReply reply = service.plan(costmap, request(costmap, {2, 10}, {10, 10}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(reply.start_cells_opened, 2);
+  EXPECT_EQ(routeDefect(costmap, reply.result.path, {2, 10}, {10, 10}, 2), "");
+  ASSERT_GE(reply.result.path.size(), 3u);
+  EXPECT_EQ(reply.result.path[1], (eaci::Cell{3, 10}));
+  EXPECT_EQ(reply.result.path[2], (eaci::Cell{4, 10}));
+  EXPECT_EQ(log.count("inflated band"), 1);
+  EXPECT_NEAR(reply.result.length, 8.0, 1e-9);  // straight down 8 rows
+}
+
+TEST(PlanningService, AStartOnAnUnknownCellThatIsAnObstacleIsTheRobotsCellToo) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+  config.params.allow_unknown = false;
+  configure(service, config);
+  CostmapSnapshot costmap = openCostmap(10, 10);
+  at(costmap, 5, 5) = kCostmapUnknown;
+  const PlanReply reply = service.plan(costmap, request(costmap, {5, 5}, {5, 9}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(reply.start_cells_opened, 1);
+  EXPECT_NEAR(reply.result.length, 4.0, 1e-9);
+}
+
+TEST(PlanningService, AStartInALethalCellFailsNamingIt) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration());
+  CostmapSnapshot costmap = openCostmap(10, 10);
+  at(costmap, 4, 4) = kCostmapLethal;
+  const PlanReply reply = service.plan(costmap, request(costmap, {4, 4}, {8, 8}));
+  EXPECT_FALSE(reply.ok);
+  EXPECT_NE(reply.error.find("lethal obstacle"), std::string::npos) << reply.error;
+  EXPECT_NE(reply.error.find("start (4.500, 5.500)"), std::string::npos) << reply.error;
+}
+
+TEST(PlanningService, AStartWalledInByLethalCellsFailsWithTheReason) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration());
+  CostmapSnapshot costmap = openCostmap(10, 10);
+  for (int row = 3; row <= 7; ++row)
+    for (int col = 3; col <= 7; ++col) at(costmap, row, col) = kCostmapLethal;
+  for (int row = 4; row <= 6; ++row)
+    for (int col = 4; col <= 6; ++col) at(costmap, row, col) = kCostmapInscribed;
+  const PlanReply reply = service.plan(costmap, request(costmap, {5, 5}, {0, 0}));
+  EXPECT_FALSE(reply.ok);
+  EXPECT_NE(reply.error.find("no free cell can be reached"), std::string::npos) << reply.error;
+}
+
+TEST(PlanningService, BadCostmapsAndPosesGetClearErrors) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration());
+  const CostmapSnapshot good = openCostmap(10, 10);
+  const auto error = [&](CostmapSnapshot costmap, PlanRequest r) {
+    const PlanReply reply = service.plan(std::move(costmap), r);
+    EXPECT_FALSE(reply.ok);
+    return reply.error;
+  };
+  const PlanRequest inside = request(good, {1, 1}, {8, 8});
+  CostmapSnapshot empty = good;
+  empty.frame.width = 0;
+  empty.cells.clear();
+  EXPECT_NE(error(empty, inside).find("the costmap is empty"), std::string::npos);
+  CostmapSnapshot short_copy = good;
+  short_copy.cells.pop_back();
+  EXPECT_NE(error(short_copy, inside).find("holds 99 cells"), std::string::npos);
+  CostmapSnapshot no_resolution = good;
+  no_resolution.frame.resolution = std::nan("");
+  EXPECT_NE(error(no_resolution, inside).find("resolution"), std::string::npos);
+  CostmapSnapshot huge = good;
+  huge.frame.width = 1 << 20;
+  huge.frame.height = 1 << 20;
+  EXPECT_NE(error(huge, inside).find("larger than the planner's cap"), std::string::npos);
+  PlanRequest off = inside;
+  off.start = {-1.0, 3.0};
+  EXPECT_NE(error(good, off).find("start (-1.000, 3.000) is off the costmap"), std::string::npos);
+  off = inside;
+  off.goal = {3.0, std::nan("")};
+  EXPECT_NE(error(good, off).find("is off the costmap"), std::string::npos);
+  CostmapSnapshot walled_goal = good;
+  at(walled_goal, 8, 8) = kCostmapLethal;
+  EXPECT_NE(error(walled_goal, inside).find("no free cell lies within 0 m"), std::string::npos);
+}
+
+TEST(PlanningService, AGoalInAnObstacleMovesToTheNearestFreeCellWithinTolerance) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot costmap = openCostmap(12, 12);
+  for (int row = 6; row <= 8; ++row)
+    for (int col = 6; col <= 8; ++col) at(costmap, row, col) = kCostmapLethal;
+  // Goal (7, 7): the free cells nearest it are 2 cells away, (5, 7) first in row-major order
+  // among (5, 7), (7, 5), (7, 9), (9, 7).
+  const PlanReply reply = service.plan(costmap, request(costmap, {7, 0}, {7, 7}, 2.0));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(reply.result.path.back(), (eaci::Cell{5, 7}));
+  EXPECT_EQ(reply.goal, centre(costmap, 5, 7));
+  const PlanReply too_far = service.plan(costmap, request(costmap, {7, 0}, {7, 7}, 1.9));
+  EXPECT_FALSE(too_far.ok);
+}
+
+TEST(PlanningService, ABadParameterRefusesEveryPlanUntilFixed) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.error = "/move_base/EaciGlobalPlanner/ants must be in 1..1000000 (got 0)";
+  configure(service, config);
+  const CostmapSnapshot costmap = openCostmap(10, 10);
+  const PlanReply refused = service.plan(costmap, request(costmap, {1, 1}, {8, 8}));
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("ants must be in 1..1000000 (got 0): refusing to plan"), std::string::npos);
+  config.error.clear();
+  configure(service, config);
+  EXPECT_TRUE(service.plan(costmap, request(costmap, {1, 1}, {8, 8})).ok);
+}
+
+// Every kind of bad value is named by the one validation, never accepted or thrown past it.
+TEST(PlannerOptions, EveryBadValueIsNamed) {
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"ants", "0"},          {"ants", "-3"},          {"islands", "1"},        {"alpha", "nan"},
+      {"beta", "-1"},         {"q", "0"},              {"kappa", "1.5"},        {"aco_rho", "0"},
+      {"neutral_cost", "0"},  {"cost_factor", "-1"},   {"lethal_cost", "0"},    {"threads", "-1"},
+      {"region_margin", "-1"}, {"stop_gap", "inf"},    {"seed", "-1"},          {"seed", "18446744073709551616"},
+      {"max_planning_time", "-0.5"}, {"max_planning_time", "nan"}, {"default_tolerance", "-1"},
+      {"landmarks", "65"},    {"landmarks", "-1"},     {"occupied_threshold", "0"}, {"algorithm", "dijkstra"},
+      {"orientation_mode", "9"}, {"ants", "many"},     {"no_such_parameter", "1"}};
+  for (const auto& [name, text] : bad) {
+    eaci::Parameters params = rosDefaultParameters();
+    RosPlannerOptions options;
+    std::string sentence;
+    try {
+      setRosParameter(params, options, name, text);
+      sentence = rosValidationError(params, options);
+    } catch (const eaci::ParameterError& e) {
+      sentence = e.what();
+    }
+    EXPECT_FALSE(sentence.empty()) << name << " = " << text << " was accepted";
+    if (name != "no_such_parameter") {
+      EXPECT_EQ(sentence.rfind(name, 0), 0u) << sentence;
+    }
+  }
+  eaci::Parameters params = rosDefaultParameters();
+  RosPlannerOptions options;
+  setRosParameter(params, options, "seed", "18446744073709551615");  // 2^64 - 1 is a seed
+  EXPECT_EQ(params.seed, 18446744073709551615ull);
+  EXPECT_EQ(rosValidationError(params, options), "");
+}
+
+TEST(PlannerOptions, TheRobotReadyDefaultsAreConfigEaciPlannerYamls) {
+  const eaci::Parameters robot = rosDefaultParameters();
+  EXPECT_EQ(robot.early_stop_iterations, 10);
+  EXPECT_EQ(robot.stop_gap, 0.01);
+  EXPECT_EQ(robot.threads, 0);
+  EXPECT_EQ(robot.region_margin, 4);
+  EXPECT_TRUE(robot.smooth_path);
+  EXPECT_TRUE(robot.allow_unknown);
+  const eaci::Parameters paper;  // the paper's colony stays
+  EXPECT_EQ(robot.ants, paper.ants);
+  EXPECT_EQ(robot.max_iterations, paper.max_iterations);
+  EXPECT_EQ(robot.alpha, paper.alpha);
+  EXPECT_EQ(robot.beta, paper.beta);
+  EXPECT_NE(robotDefaultsSummary().find("early_stop_iterations 10"), std::string::npos) << robotDefaultsSummary();
+}
+
+// A colony configured for a million iterations with no limit stops at ~cancel with the best
+// route so far; cancel() says false when no plan runs.
+TEST(PlanningService, CancelStopsThePlanInProgressWithTheBestRouteSoFar) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.params.max_iterations = 1000000;
+  config.params.early_stop_iterations = 0;
+  config.options.max_planning_time = 0;
+  configure(service, config);
+  EXPECT_FALSE(service.cancel());
+  const CostmapSnapshot costmap = openCostmap(40, 40);
+  auto plan = std::async(std::launch::async, [&] { return service.plan(costmap, request(costmap, {1, 1}, {38, 38})); });
+  while (!service.cancel()) std::this_thread::yield();
+  ASSERT_EQ(plan.wait_for(std::chrono::seconds(60)), std::future_status::ready) << "cancel did not stop the plan";
+  const PlanReply reply = plan.get();
+  EXPECT_EQ(reply.stopped_by, StopReason::kCancelled);
+  if (reply.ok) {
+    EXPECT_EQ(routeDefect(costmap, reply.result.path, {1, 1}, {38, 38}), "");
+  }
+  EXPECT_LT(reply.result.iterations_run, 1000000);
+}
+
+// A plan stopped before its first iteration (here: shutting down from the start): geodesic
+// EACI answers with the cheapest route its islands sit on, the paper's islands with no route
+// and the reason.
+TEST(PlanningService, AStopBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIslands) {
+  Log log;
+  ServiceSettings s = settings();
+  s.shutting_down = [] { return true; };
+  PlanningService service(s, log.logger());
+  PlanningService::Configuration config = configuration();
+  config.options.max_planning_time = 0;
+  configure(service, config);
+  const CostmapSnapshot costmap = openCostmap(40, 40);
+  const PlanReply geodesic = service.plan(costmap, request(costmap, {1, 1}, {38, 38}));
+  EXPECT_TRUE(geodesic.ok) << geodesic.error;
+  EXPECT_EQ(geodesic.stopped_by, StopReason::kShutdown);
+  EXPECT_EQ(geodesic.result.iterations_run, 0);
+  EXPECT_TRUE(geodesic.result.route_from_search);
+  EXPECT_EQ(routeDefect(costmap, geodesic.result.path, {1, 1}, {38, 38}), "");
+  config.params.island_strategy = eaci::IslandStrategy::kPaper;  // no search route to fall back on
+  configure(service, config);
+  const PlanReply paper = service.plan(costmap, request(costmap, {1, 1}, {38, 38}));
+  EXPECT_FALSE(paper.ok);
+  EXPECT_EQ(paper.stopped_by, StopReason::kShutdown);
+  EXPECT_NE(paper.error.find("shutting down after 0 iterations, before a route was found"), std::string::npos)
+      << paper.error;
+}
+
+// 2000 x 2000 cells (4 M) of rooms, corner to corner, a limit of 1 ms: the searches that grow
+// with the map are stopped inside their loops. (Wall-clock figures for the 0.05 s limit over
+// 50 requests are a benchmark: docs/ros.md.) Here: the plan says the limit stopped it, and it
+// ends long before the unbounded plan could (whose A* alone visits millions of cells).
+TEST(PlanningService, AOneMillisecondLimitOnFourMillionCellsIsKept) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.options.max_planning_time = 0.001;
+  config.params.threads = 1;
+  configure(service, config);
+  CostmapSnapshot costmap = openCostmap(2000, 2000);
+  for (int wall = 100; wall < 2000; wall += 100)
+    for (int i = 0; i < 2000; ++i)
+      if (i % 100 != 50) at(costmap, wall, i) = at(costmap, i, wall) = kCostmapLethal;
+  for (int k = 0; k < 3; ++k) {
+    const auto begin = std::chrono::steady_clock::now();
+    const PlanReply reply = service.plan(costmap, request(costmap, {1, 1}, {1998, 1998}));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    EXPECT_TRUE(reply.stopped_by == StopReason::kTimeLimit || reply.error.find("max_planning_time") != std::string::npos)
+        << reply.error;
+    EXPECT_LT(seconds, 0.5) << "the 1 ms limit was not kept inside the searches";
+  }
+}
+
+// Many threads plan at once on costmaps of changing size while another reconfigures (good and
+// bad values, thread counts) and another cancels: every reply is a valid route on the costmap
+// it was given, or a failure with its reason; nothing hangs (ThreadSanitizer runs this too).
+TEST(PlanningServiceThreads, ConcurrentPlansReconfigureAndCancel) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration good = configuration();
+  good.options.max_planning_time = 2.0;
+  configure(service, good);
+  std::atomic<bool> done{false};
+  std::atomic<int> routes{0}, failures{0}, defects{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 3; ++t) {
+    threads.emplace_back([&, t] {
+      for (int k = 0; k < 12; ++k) {
+        const int width = 30 + 10 * ((t + k) % 3), height = 20 + 10 * (k % 2);
+        CostmapSnapshot costmap = openCostmap(width, height);
+        for (int row = 0; row < height - 4; ++row) at(costmap, row, width / 2) = kCostmapLethal;
+        const eaci::Cell from{1, 1}, to{1, width - 2};
+        const PlanReply reply = service.plan(costmap, request(costmap, from, to));
+        if (reply.ok) {
+          ++routes;
+          if (!routeDefect(costmap, reply.result.path, from, to).empty()) ++defects;
+        } else {
+          ++failures;
+          if (reply.error.empty()) ++defects;
+        }
+      }
+    });
+  }
+  std::thread reconfigure([&] {
+    for (int k = 0; !done.load(); ++k) {
+      PlanningService::Configuration config = good;
+      config.params.threads = k % 3;
+      config.options.algorithm = k % 4 == 3 ? eaci::Algorithm::kAStar : eaci::Algorithm::kEaci;
+      if (k % 5 == 4) config.error = "ants must be in 1..1000000 (got 0)";
+      configure(service, config);
+      (void)service.configuration();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    configure(service, good);
+  });
+  std::thread cancel([&] {
+    while (!done.load()) {
+      service.cancel();
+      std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    }
+  });
+  for (auto& thread : threads) thread.join();
+  done = true;
+  reconfigure.join();
+  cancel.join();
+  EXPECT_EQ(defects.load(), 0);
+  EXPECT_EQ(routes + failures, 36);
+  EXPECT_GT(routes.load(), 0);
+}
+
+// A costmap whose origin moves with every update (a rolling window) gets no landmarks, said once.
+TEST(PlanningService, ARollingWindowCostmapGetsNoLandmarks) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.options.landmarks = 4;
+  configure(service, config);
+  CostmapSnapshot costmap = openCostmap(300, 300);
+  for (int k = 0; k < 5; ++k) {
+    costmap.frame.origin = {0.5 * k, 0.25 * k};
+    PlanRequest r = request(costmap, {10, 10}, {290, 290});
+    r.start += costmap.frame.origin;
+    r.goal += costmap.frame.origin;
+    EXPECT_TRUE(service.plan(costmap, r).ok);
+  }
+  EXPECT_EQ(log.count("rolling window"), 1);
+}
+
+TEST(PlanningService, SavedCostmapsKeepTheNewestOnly) {
+  const fs::path dir = fs::temp_directory_path() / ("eaci_service_replays_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  {
+    Log log;
+    ServiceSettings s = settings();
+    s.save_costmap_dir = dir.string();
+    s.save_costmap_keep = 3;
+    s.save_costmap_on_failure = true;
+    PlanningService service(s, log.logger());
+    configure(service, configuration());
+    CostmapSnapshot costmap = openCostmap(12, 12);
+    for (int row = 0; row < 12; ++row) at(costmap, row, 6) = kCostmapLethal;  // the goal side is cut off
+    for (int k = 0; k < 5; ++k) {
+      ReplayFiles files;
+      EXPECT_EQ(service.saveCostmap(costmap, files), "");
+      EXPECT_TRUE(fs::exists(files.map_yaml));
+      std::this_thread::sleep_for(std::chrono::milliseconds(3));  // names carry milliseconds
+    }
+    for (int k = 0; k < 4; ++k) EXPECT_FALSE(service.plan(costmap, request(costmap, {5, 1}, {5, 10})).ok);
+  }  // the writer finishes before the service is gone
+  int saved = 0, failed = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 12 && name.compare(name.size() - 12, 12, ".params.yaml") == 0)
+      (name.rfind("eaci_costmap_", 0) == 0 ? saved : failed) += 1;
+  }
+  EXPECT_EQ(saved, 3);
+  EXPECT_GE(failed, 1);
+  EXPECT_LE(failed, 3);
+  fs::remove_all(dir);
+}
+
+}  // namespace
