@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <new>
 #include <sstream>
@@ -31,6 +32,23 @@ constexpr std::size_t kMaxLandmarkBytes = std::size_t{256} << 20;  // TODO(core)
 int landmarksThatFit(std::size_t cells, int requested) {
   if (cells == 0) return requested;
   return static_cast<int>(std::min<std::size_t>(requested, kMaxLandmarkBytes / (4 * cells)));
+}
+
+// "" when `route` runs from `from` to `to` by 8-neighbour moves over cells `view` lets a robot
+// cross, never between two blocked cells that touch at a corner; else what is wrong. A last
+// check of what goes out to the robot, independent of the planner that made it.
+std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route, eaci::Cell from, eaci::Cell to) {
+  if (route.empty() || !(route.front() == from) || !(route.back() == to)) return "it does not join start and goal";
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    if (!view.isFree(route[i])) return "cell " + std::to_string(i) + " is an obstacle";
+    if (i == 0) continue;
+    const int dr = route[i].row - route[i - 1].row, dc = route[i].col - route[i - 1].col;
+    if (std::abs(dr) > 1 || std::abs(dc) > 1 || (dr == 0 && dc == 0)) return "it jumps at cell " + std::to_string(i);
+    if (dr != 0 && dc != 0 &&
+        (!view.isFree({route[i - 1].row + dr, route[i - 1].col}) || !view.isFree({route[i - 1].row, route[i - 1].col + dc})))
+      return "it cuts a corner at cell " + std::to_string(i);
+  }
+  return "";
 }
 
 }  // namespace
@@ -249,6 +267,11 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     return failure(std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
                    " iterations, before a route was found");
   }
+  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *reachable_goal);
+  if (!defect.empty() || reply.result.smoothed_path.empty() || !(reply.result.smoothed_path.front() == *start_cell) ||
+      !(reply.result.smoothed_path.back() == *reachable_goal))
+    return failure("internal error: the planner's route is not drivable (" + (defect.empty() ? "smoothed ends" : defect) +
+                   "); no plan");
   if (!(*reachable_goal == *goal_cell)) reply.goal = frame.cellToWorld(*reachable_goal);
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
