@@ -4,10 +4,15 @@
 // rules, windows, targets and reversed costs; one workspace serves maps of every size in turn.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <new>
 #include <queue>
+#include <string>
+#include <system_error>
+#include <thread>
 #include <random>
 #include <utility>
 #include <vector>
@@ -430,6 +435,81 @@ TEST(Landmarks, CacheDestroyedWhileMakingThemStops) {
   auto cache = std::make_unique<eaci::LandmarkCache>(8);
   EXPECT_EQ(cache->usableFor(grid), nullptr);
   cache.reset();  // joins the thread: a hang here would time the test out
+}
+
+TEST(Landmarks, ThoseThatFitInTheCap) {
+  // 256 MiB / 4 bytes = 64 Mi landmark-cells.
+  EXPECT_EQ(eaci::kMaxLandmarkBytes, std::size_t{268435456});
+  EXPECT_EQ(eaci::landmarksThatFit(std::size_t{2048} * 2048, 20), 16);  // 64 Mi / 4 Mi
+  EXPECT_EQ(eaci::landmarksThatFit(std::size_t{2048} * 2048, 8), 8);
+  EXPECT_EQ(eaci::landmarksThatFit(std::size_t{8192} * 8192, 4), 1);     // 64 Mi / 64 Mi
+  EXPECT_EQ(eaci::landmarksThatFit(std::size_t{8193} * 8192, 4), 0);     // not even one
+  EXPECT_EQ(eaci::landmarksThatFit(300 * 300, 1000), 745);               // 67108864 / 90000
+  EXPECT_EQ(eaci::landmarksThatFit(300 * 300, 0), 0);
+}
+
+// A cache that makes its landmarks with `make` (counting its calls and the count asked for).
+struct MakerProbe {
+  std::atomic<int> calls{0};
+  std::atomic<int> last_count{0};
+};
+
+TEST(Landmarks, CacheAsksForNoMoreThanFitAndSaysHowMany) {
+  const CostGrid grid(300, 300, false);
+  MakerProbe probe;
+  eaci::LandmarkCache cache(1000, [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+    probe.calls.fetch_add(1);
+    probe.last_count.store(count);
+    return eaci::Landmarks::compute(g, 2, cancel);  // two suffice to see them used
+  });
+  EXPECT_EQ(cache.count(), 1000);
+  EXPECT_EQ(cache.usableFor(grid), nullptr);
+  EXPECT_EQ(cache.countInUse(), 745);  // 67108864 / 90000, as ThoseThatFitInTheCap
+  cache.wait();
+  EXPECT_EQ(probe.last_count.load(), 745);
+  EXPECT_NE(cache.usableFor(grid), nullptr);
+  EXPECT_EQ(cache.lastError(), "");
+  // On a map where not one fits (8193 x 8192 cells, 67 MB of cell bytes) none are asked for.
+  const CostGrid too_big(8193, 8192, false);
+  EXPECT_EQ(cache.usableFor(too_big), nullptr);
+  EXPECT_EQ(cache.countInUse(), 0);
+  cache.wait();
+  EXPECT_EQ(probe.calls.load(), 1);
+}
+
+TEST(Landmarks, FailureWhileMakingThemLeavesTheCacheWithoutThemAndTheNextPlanTriesAgain) {
+  const CostGrid grid(64, 64, false);
+  MakerProbe probe;
+  eaci::LandmarkCache cache(4, [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+    if (probe.calls.fetch_add(1) == 0) throw std::bad_alloc();  // the first attempt runs out of memory
+    return eaci::Landmarks::compute(g, count, cancel);
+  });
+  EXPECT_EQ(cache.usableFor(grid), nullptr);  // starts the thread, which throws: no std::terminate
+  cache.wait();
+  EXPECT_NE(cache.lastError().find("bad_alloc"), std::string::npos) << cache.lastError();
+  EXPECT_EQ(cache.usableFor(grid), nullptr);  // tries again
+  cache.wait();
+  EXPECT_EQ(probe.calls.load(), 2);
+  EXPECT_EQ(cache.lastError(), "");
+  const auto made = cache.usableFor(grid);
+  ASSERT_NE(made, nullptr);
+  EXPECT_EQ(made->count(), 4);
+}
+
+TEST(Landmarks, ThreadThatCannotStartLeavesTheCacheUsableAndTheSearchGoesOnWithoutThem) {
+  const CostGrid grid(64, 64, false);
+  std::atomic<int> starts{0};
+  eaci::LandmarkCache cache(4, {}, [&](std::function<void()> body) {
+    if (starts.fetch_add(1) == 0)
+      throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again), "no thread");
+    return std::thread(std::move(body));
+  });
+  EXPECT_EQ(cache.usableFor(grid), nullptr);  // no exception out of it
+  EXPECT_NE(cache.lastError().find("could not start"), std::string::npos) << cache.lastError();
+  EXPECT_EQ(cache.usableFor(grid), nullptr);  // not stuck "under way": starts the thread now
+  cache.wait();
+  EXPECT_NE(cache.usableFor(grid), nullptr);
+  EXPECT_EQ(starts.load(), 2);
 }
 
 // With landmarks the search that meets in the middle still costs what the independent Dijkstra

@@ -5,7 +5,10 @@
 #include <atomic>
 #include <mutex>
 #include <set>
+#include <functional>
+#include <new>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -88,4 +91,47 @@ TEST(PlannerThreads, WorkerGroupShareRunsOnTheCallerAndRethrows) {
   std::atomic<int> calls{0};
   group.run([&](int) { ++calls; });
   EXPECT_EQ(calls.load(), 2);
+}
+
+TEST(PlannerThreads, WorkerGroupWhoseThreadsCannotStartWorksOnThoseItHas) {
+  // The second start fails (a thread limit): the group keeps the caller and one thread, and
+  // run() and share() work on those, no exception, no std::terminate.
+  int starts = 0;
+  eaci::WorkerGroup group(4, [&](std::function<void()> body) {
+    if (++starts == 2) throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again), "no thread");
+    return std::thread(std::move(body));
+  });
+  EXPECT_EQ(group.workers(), 2);
+  std::mutex mutex;
+  std::vector<int> calls(2, 0);
+  group.run([&](int worker) {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++calls.at(static_cast<std::size_t>(worker));
+  });
+  EXPECT_EQ(calls, std::vector<int>({1, 1}));
+  std::atomic<int> next{0}, done{0};
+  group.share([&](int) {
+    for (int k = next.fetch_add(1); k < 100; k = next.fetch_add(1)) done.fetch_add(1);
+  });
+  EXPECT_EQ(done.load(), 100);
+  // No thread at all: the caller alone.
+  eaci::WorkerGroup alone(3, [](std::function<void()>) -> std::thread { throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again)); });
+  EXPECT_EQ(alone.workers(), 1);
+  int ran = 0;
+  alone.run([&](int) { ++ran; });
+  EXPECT_EQ(ran, 1);
+}
+
+TEST(PlannerThreads, WorkerGroupBringsAnExceptionOfAnyThreadToTheCaller) {
+  eaci::WorkerGroup group(3);
+  for (int thrower = 0; thrower < 3; ++thrower) {
+    EXPECT_THROW(group.run([&](int worker) {
+                   if (worker == thrower) throw std::bad_alloc();
+                 }),
+                 std::bad_alloc)
+        << "worker " << thrower;
+  }
+  std::atomic<int> calls{0};
+  group.run([&](int) { calls.fetch_add(1); });
+  EXPECT_EQ(calls.load(), 3);
 }

@@ -44,12 +44,9 @@ enum class PlanStatus {
   kInvalidInput,  // bad parameters, empty map, start/goal off the map or in an obstacle, map too large
 };
 
-// Ant colonies keep two doubles per directed edge: 128 bytes per cell of the cells they work
-// on. Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) that would
-// need more than this are refused (about 16.7 million cells, e.g. 4096 x 4096); geodesic EACI
-// keeps pheromone only for its region around the route.
-constexpr std::size_t kMaxPheromoneBytes = std::size_t{2} << 30;
-constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
+// The size caps a plan checks (each refusal is kInvalidInput with the size and the cap):
+// kMaxGridCells (grid/cost_grid.hpp) on the map, kMaxPheromoneBytes (aco/pheromone_field.hpp)
+// on a colony's cells, on the whole map or on a geodesic colony's region around the route.
 
 // What a caller that plans again and again (the ROS node, the move_base plugin, the benchmarks)
 // keeps from plan to plan: the exact search's buffers (A*, and the cheapest route geodesic
@@ -64,7 +61,18 @@ struct PlannerWorkspace {
 
 struct PlanOptions {
   bool record_pheromone = false;   // fill PlanResult::pheromone (strongest edge leaving each cell)
-  StopCheck should_stop;           // asked between iterations; the best route so far is returned
+  // The caller's stop check (a deadline, a cancel flag). Called with the number of colony
+  // iterations done (0 during set-up), between set-up steps, between iterations, and inside
+  // every loop whose work grows with the map or the route (A*, the two sides of the search
+  // that meets in the middle, floods, leg fields, region and pheromone building, island scans,
+  // ant walks, smoothing) every StopPoll::kWorkBetweenChecks (4096) cells or steps. It may be
+  // called from any thread the plan uses, at the same time: it must be thread-safe (an atomic
+  // flag, a clock), and cheap. Once it returns true the plan ends promptly with
+  // PlanResult::interrupted: the best route so far (colony iterations; a stopped iteration is
+  // dropped), or for geodesic EACI the A* route its islands sit on if that search had
+  // finished, else kNoPath with an error that says it was stopped. Stopped while smoothing,
+  // smoothed_path is smoothed up to there and follows the route's cells after (valid).
+  StopCheck should_stop;
   IterationObserver observer;      // sees the field at iteration 0 (initial) and after each update
   // Kept by a caller that plans again and again; null: this call's own buffers and threads.
   PlannerWorkspace* workspace = nullptr;
@@ -158,6 +166,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   using detail::failure;
   const std::string parameter_error = validationError(params);
   if (!parameter_error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, "invalid parameter: " + parameter_error);
+  if (grid.cellCount() > kMaxGridCells)  // a CostGrid refuses to be made so large; checked again here
+    return failure(algorithm, PlanStatus::kInvalidInput, gridTooLargeError(grid.width(), grid.height()));
   const CostRule rule = costRule(params);
   if (grid.costRule().neutral_cost != rule.neutral_cost || grid.costRule().cost_factor != rule.cost_factor) {
     CostGrid ruled = grid;
@@ -194,12 +204,14 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     r.islands = {start};
     return r;
   }
+  StopPoll poll(options.should_stop, 0);  // this thread's: A*, the flood, smoothing
   if (algorithm == Algorithm::kAStar) {
     GridSearchWorkspace own_workspace;
     GridSearchWorkspace& workspace = options.workspace ? options.workspace->search : own_workspace;
-    const ShortestPath shortest = shortestPath(grid, start, goal, workspace);
+    const ShortestPath shortest = shortestPath(grid, start, goal, workspace, &poll);
     r.path = shortest.path;
     r.islands = {start, goal};
+    r.interrupted = shortest.stopped;
   } else {
     const auto unreachable = [&] {
       return failure(algorithm, PlanStatus::kNoPath,
@@ -207,7 +219,16 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     };
     // Geodesic EACI finds out itself, from the A* route its islands sit on, without a flood of the map.
     const bool geodesic = algorithm == Algorithm::kEaci && params.island_strategy == IslandStrategy::kGeodesic;
-    if (!geodesic && !reachableFrom(grid, start)[grid.index(goal)]) return unreachable();
+    if (!geodesic) {
+      const bool reachable = reachableFrom(grid, start, &poll)[grid.index(goal)] != 0;
+      if (poll.stopped()) {
+        PlanResult stopped = failure(algorithm, PlanStatus::kNoPath,
+                                     "stopped (should_stop) while finding the cells reachable from the start");
+        stopped.interrupted = true;
+        return stopped;
+      }
+      if (!reachable) return unreachable();
+    }
     GridSearchWorkspace* search_workspace = options.workspace ? &options.workspace->search : nullptr;
     ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
     ColonyResult colony = algorithm == Algorithm::kEaci
@@ -216,6 +237,13 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
                               : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer,
                                                 colony_workspace);
     if (colony.goal_unreachable) return unreachable();
+    if (colony.region_too_large) {
+      std::ostringstream e;
+      e << "the colony's region within region_margin " << params.region_margin << " of the route holds over "
+        << kMaxPheromoneCells << " cells, whose pheromone would exceed the cap of " << (kMaxPheromoneBytes >> 20)
+        << " MiB (lower region_margin)";
+      return failure(algorithm, PlanStatus::kInvalidInput, e.str());
+    }
     detail::fillFromColony(grid, colony, options, r);
     if (colony_workspace) {  // their memory serves the next plan
       colony_workspace->region = std::move(colony.region);
@@ -228,8 +256,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   if (r.path.empty()) {
     r.status = PlanStatus::kNoPath;
-    if (algorithm == Algorithm::kAStar)
+    if (algorithm == Algorithm::kAStar && r.interrupted)
+      r.error = "stopped (should_stop) during the A* search, before it reached the goal";
+    else if (algorithm == Algorithm::kAStar)
       r.error = "goal " + detail::describe(goal) + " cannot be reached from start " + detail::describe(start);
+    else if (r.interrupted && r.iterations_run == 0)
+      r.error = "stopped (should_stop) while setting up, before any ant walked";
     else if (r.interrupted)
       r.error = "stopped (should_stop) after " + std::to_string(r.iterations_run) +
                 " iterations, before any ant reached the goal";
@@ -244,7 +276,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   r.cost = routeCost(grid, r.path);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
-  r.smoothed_path = params.smooth_path ? smoothRoute(grid, r.path) : r.path;
+  r.smoothed_path = params.smooth_path ? smoothRoute(grid, r.path, &poll) : r.path;
+  r.interrupted = r.interrupted || poll.stopped();
   r.smoothed_length = pathLength(r.smoothed_path);
   return r;
 }
@@ -254,6 +287,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
 inline PlanResult plan(const GridView& view, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
                        const PlanOptions& options = {}) {
   if (view.empty()) return detail::failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
+  if (static_cast<std::size_t>(view.width()) * static_cast<std::size_t>(view.height()) > kMaxGridCells)
+    return detail::failure(algorithm, PlanStatus::kInvalidInput, gridTooLargeError(view.width(), view.height()));
   return plan(CostGrid::fromView(view, params.allow_corner_cutting, costRule(params)), start, goal, algorithm, params,
               options);
 }

@@ -27,12 +27,7 @@ std::string sizeOf(const eaci::MapFrame& frame) {
 
 // Costmaps larger than this are refused: 32-bit cell indices, and the planner's per-cell
 // buffers (a few tens of bytes a cell) must fit a robot's memory.
-constexpr std::size_t kMaxCostmapCells = std::size_t{1} << 30;  // TODO(core): eaci::kMaxGridCells
-constexpr std::size_t kMaxLandmarkBytes = std::size_t{256} << 20;  // TODO(core)
-int landmarksThatFit(std::size_t cells, int requested) {
-  if (cells == 0) return requested;
-  return static_cast<int>(std::min<std::size_t>(requested, kMaxLandmarkBytes / (4 * cells)));
-}
+constexpr std::size_t kMaxCostmapCells = eaci::kMaxGridCells;
 
 // "" when `route` runs from `from` to `to` by 8-neighbour moves over cells `view` lets a robot
 // cross, never between two blocked cells that touch at a corner; else what is wrong. A last
@@ -244,7 +239,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
 
   const eaci::GridView view(costmap.cells.data(), frame.width, frame.height, costmap.order, interpretation);
-  const auto reachable_goal = eaci::nearestFreeCell(view, *goal_cell, tolerance / frame.resolution);
+  const auto reachable_goal = eaci::nearestFreeCell(view, *goal_cell, tolerance / frame.resolution, should_stop);
   if (!reachable_goal) {
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
       return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) +
@@ -297,13 +292,13 @@ void PlanningService::useLandmarksFor(const CostmapSnapshot& costmap, int reques
                          "again for every plan");
   }
   const std::size_t cells = costmap.cells.size();
-  const int fitting = landmarksThatFit(cells, requested);
+  const int fitting = eaci::landmarksThatFit(cells, requested);
   const int count = rolling_ ? 0 : fitting;
   if (count != landmarks_in_use_ && fitting < requested && !rolling_)
     say(LogLevel::kWarn, std::to_string(requested) + " landmarks on " + sizeOf(frame) + " would need " +
                              std::to_string(static_cast<unsigned long long>(requested) * cells * 4 / (1 << 20)) +
                              " MiB: making " + std::to_string(fitting) + " (the cap is " +
-                             std::to_string(kMaxLandmarkBytes >> 20) + " MiB)");
+                             std::to_string(eaci::kMaxLandmarkBytes >> 20) + " MiB)");
   landmarks_in_use_ = count;
   workspace_->search.useLandmarks(count);
 }

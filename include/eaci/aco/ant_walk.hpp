@@ -173,7 +173,9 @@ class AntWalker {
   // It may not step on an island other than the one it is heading for, so the route visits
   // the islands in order. When its current goal is an allowed neighbour it takes it at once
   // (the d = 0 guard of Eq. 9). An ant with no allowed move is lost: route.complete = false.
-  void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route) {
+  // `stop`: ticked once per step (a walk may take as many steps as the region has cells); once
+  // it says stop the walk ends there, incomplete.
+  void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route, StopPoll* stop = nullptr) {
     const CostGrid& grid = *setup.grid;
     const ColonyRegion& region = setup.region;
     beginWalk(region.size());
@@ -184,6 +186,7 @@ class AntWalker {
     std::size_t target = 1;
     int previous_dir = -1;
     while (target < setup.waypoints.size()) {
+      if (stop != nullptr && stop->tick()) return;
       int count = 0;
       int chosen = -1;
       std::uint32_t chosen_cell = ColonyRegion::kNone;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
 
@@ -37,10 +38,12 @@ inline bool freeOnAuxiliaryMap(const CostGrid& original, Cell cell, Cell start, 
 }
 
 // The auxiliary map of Eq. 12: one pass reading the original map only.
+// `stop`: ticked once per row; stopped, the map is unfinished (the caller reads stop->stopped()).
 inline CostGrid auxiliaryMap(const CostGrid& original, Cell start, Cell goal,
-                               AuxiliaryBorder border = AuxiliaryBorder::kFree) {
+                               AuxiliaryBorder border = AuxiliaryBorder::kFree, StopPoll* stop = nullptr) {
   CostGrid aux = original;
   for (int r = 0; r < original.height(); ++r) {
+    if (stop != nullptr && stop->tick(static_cast<std::size_t>(original.width()))) return aux;
     for (int c = 0; c < original.width(); ++c) {
       const Cell cell{r, c};
       if (original.isBlocked(cell)) continue;

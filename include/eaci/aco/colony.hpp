@@ -16,6 +16,7 @@
 #include "eaci/aco/ant_walk.hpp"
 #include "eaci/aco/parameters.hpp"
 #include "eaci/aco/pheromone_update.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 #include "eaci/parallel/worker_group.hpp"
 
 namespace eaci {
@@ -38,8 +39,8 @@ struct ColonyRun {
   std::vector<double> best_cost_so_far;     // +infinity until a route is found
 };
 
-// Called between iterations with the number of iterations done; returns true to stop.
-using StopCheck = std::function<bool(int)>;
+// StopCheck (parallel/stop_poll.hpp) is asked between iterations with the number of iterations
+// done, and every few thousand steps of each ant's walk, on the thread that walks it.
 // Called after each iteration's pheromone update (e.g. to record snapshots), with the field and
 // the region whose cells index it (strongestPheromoneByGridCell maps it onto the grid).
 using IterationObserver = std::function<void(int iteration, const PheromoneField&, const ColonyRegion&)>;
@@ -112,8 +113,11 @@ class Colony {
     workspace_.prepare(params.ants, colonyThreads(params));
   }
 
+  // Stopped during an iteration's walks, that iteration is dropped: the run keeps the best
+  // route of the iterations before it.
   ColonyRun run(const StopCheck& should_stop = {}, const IterationObserver& observer = {}) {
     ColonyRun run;
+    should_stop_ = should_stop ? &should_stop : nullptr;
     int since_improvement = 0;
     for (int iteration = 1; iteration <= params_.max_iterations; ++iteration) {
       if (should_stop && should_stop(iteration - 1)) {
@@ -121,6 +125,10 @@ class Colony {
         break;
       }
       const int walked = walkAnts(iteration);
+      if (walk_stopped_.load(std::memory_order_relaxed)) {
+        run.interrupted = true;
+        break;
+      }
       const bool improved = recordIteration(iteration, walked, run);
       updatePheromone();
       if (observer) observer(iteration, field_, setup_.region);
@@ -153,6 +161,7 @@ class Colony {
     for (int first = 0; first < ants; first += kAntsPerWave) {
       const int last = std::min(ants, first + kAntsPerWave);
       walkAnts(iteration, first, last);
+      if (walk_stopped_.load(std::memory_order_relaxed)) return last;
       for (int k = first; k < last; ++k) {
         const AntRoute& route = routes_[static_cast<std::size_t>(k)];
         if (!route.complete || route.cost > good_enough_cost_) continue;
@@ -170,13 +179,19 @@ class Colony {
     const auto walk_claimed = [&](int worker) {
       AntWalker& walker = worker_state_[static_cast<std::size_t>(worker)].walker;
       AntRoute& scratch = worker_state_[static_cast<std::size_t>(worker)].scratch;
+      StopPoll poll = should_stop_ != nullptr ? StopPoll(*should_stop_, iteration - 1) : StopPoll();
       for (int k = next_ant.fetch_add(1, std::memory_order_relaxed); k < last;
            k = next_ant.fetch_add(1, std::memory_order_relaxed)) {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
         // Walk into the worker's own route, then swap it into the ant's slot: neighbouring
         // slots belong to other workers, and writing them step by step would share cache lines.
-        walker.walk(setup_, rng, scratch);
+        walker.walk(setup_, rng, scratch, should_stop_ != nullptr ? &poll : nullptr);
         std::swap(scratch, routes_[static_cast<std::size_t>(k)]);
+        if (poll.stopped()) {  // the iteration is dropped: leave the other ants unwalked
+          walk_stopped_.store(true, std::memory_order_relaxed);
+          next_ant.store(last, std::memory_order_relaxed);
+          return;
+        }
       }
     };
     if (on_workers_) workspace_.group().share(walk_claimed);
@@ -238,6 +253,8 @@ class Colony {
   std::vector<AntRoute>& routes_;
   std::vector<ColonyWorkspace::WorkerState>& worker_state_;
   bool on_workers_;  // walk on the worker threads (colonyWorkers > 1), else on the calling thread
+  const StopCheck* should_stop_ = nullptr;  // run()'s, asked during the walks too
+  std::atomic<bool> walk_stopped_{false};   // a walk was stopped: the iteration is dropped
   int best_ = -1;
   int worst_ = -1;
 };

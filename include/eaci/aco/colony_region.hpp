@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 #include "eaci/search/grid_search.hpp"
 
 namespace eaci {
@@ -26,9 +27,11 @@ class ColonyRegion {
   ColonyRegion() = default;
 
   // Every cell of the map; a move is allowed where CostGrid::canMove allows it. `reuse`: a
-  // region whose memory the new one takes over (a planner keeps one between plans).
+  // region whose memory the new one takes over (a planner keeps one between plans). `stop`:
+  // ticked once per row of cells; stopped, the region is unfinished (the caller reads
+  // stop->stopped() and drops it).
   static ColonyRegion wholeMap(const CostGrid& grid) { return wholeMap(grid, ColonyRegion()); }
-  static ColonyRegion wholeMap(const CostGrid& grid, ColonyRegion reuse) {
+  static ColonyRegion wholeMap(const CostGrid& grid, ColonyRegion reuse, StopPoll* stop = nullptr) {
     ColonyRegion region = std::move(reuse);
     region.clear();
     region.whole_map_ = true;
@@ -38,16 +41,29 @@ class ColonyRegion {
     for (int d = 0; d < kDirections; ++d)
       region.index_step_[d] = static_cast<std::ptrdiff_t>(kDirRow[d]) * grid.width() + kDirCol[d];
     region.moves_.assign(grid.cellCount(), 0);
-    for (std::size_t i = 0; i < grid.cellCount(); ++i) region.moves_[i] = static_cast<std::uint8_t>(grid.movesFrom(grid.cellAt(i)));
+    StopPoll never;
+    StopPoll& poll = stop != nullptr ? *stop : never;
+    for (int row = 0; row < grid.height(); ++row) {
+      if (poll.tick(static_cast<std::size_t>(grid.width()))) return region;
+      for (int col = 0; col < grid.width(); ++col)
+        region.moves_[grid.index(Cell{row, col})] = static_cast<std::uint8_t>(grid.movesFrom(Cell{row, col}));
+    }
     return region;
   }
 
   // The free cells at most `margin` moves (CostGrid::canMove) from a cell of `route`; a move
   // is allowed where the grid allows it and both cells are in the region.
+  // `max_cells`: a region that would hold more cells is not made: it comes back empty with
+  // tooLarge() true (the caller's pheromone would not fit; kMaxPheromoneBytes). `stop`:
+  // ticked once per cell; stopped, the region is unfinished (the caller reads stop->stopped()).
   static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin) {
     return aroundRoute(grid, route, margin, ColonyRegion());
   }
-  static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin, ColonyRegion reuse) {
+  static ColonyRegion aroundRoute(const CostGrid& grid, const CellPath& route, int margin, ColonyRegion reuse,
+                                  std::size_t max_cells = std::numeric_limits<std::size_t>::max(),
+                                  StopPoll* stop = nullptr) {
+    StopPoll never;
+    StopPoll& poll = stop != nullptr ? *stop : never;
     ColonyRegion region = std::move(reuse);
     region.clear();
     region.grid_cells_ = grid.cellCount();
@@ -68,9 +84,17 @@ class ColonyRegion {
         ring.push_back(static_cast<std::uint32_t>(grid.index(c)));
       }
     }
+    const auto refuse = [&region] {  // over max_cells: no region
+      region.clear();
+      region.too_large_ = true;
+      return std::move(region);
+    };
+    if (region.grid_index_.size() > max_cells) return refuse();
     for (int distance = 1; distance <= margin && !ring.empty(); ++distance) {
       next_ring.clear();
       for (std::uint32_t i : ring) {
+        if (poll.tick()) return region;
+        if (region.grid_index_.size() > max_cells) return refuse();
         const Cell here = grid.cellAt(i);
         for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
           const Cell next = step(here, __builtin_ctz(moves));
@@ -83,12 +107,14 @@ class ColonyRegion {
       }
       ring.swap(next_ring);
     }
+    if (region.grid_index_.size() > max_cells) return refuse();
     sortIndices(region.grid_index_, ring);
     region.size_ = region.grid_index_.size();
     for (std::size_t r = 0; r < region.size_; ++r) mark(grid.cellAt(region.grid_index_[r])) = static_cast<std::uint32_t>(r);
     region.neighbours_.assign(region.size_ * kDirections, kNone);
     region.moves_.assign(region.size_, 0);
     for (std::size_t r = 0; r < region.size_; ++r) {
+      if (poll.tick()) return region;
       const Cell here = grid.cellAt(region.grid_index_[r]);
       for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
         const int d = __builtin_ctz(moves);
@@ -104,6 +130,8 @@ class ColonyRegion {
   std::size_t size() const { return size_; }            // region cells
   std::size_t gridCellCount() const { return grid_cells_; }
   bool isWholeMap() const { return whole_map_; }
+  // aroundRoute refused it: it would have held more than its max_cells (the region is empty).
+  bool tooLarge() const { return too_large_; }
 
   // Grid index of region cell r.
   std::uint32_t gridIndex(std::uint32_t r) const { return whole_map_ ? r : grid_index_[r]; }
@@ -136,6 +164,7 @@ class ColonyRegion {
   // Empty, with the memory it holds kept for the next region.
   void clear() {
     whole_map_ = false;
+    too_large_ = false;
     grid_cells_ = size_ = 0;
     grid_width_ = 0;
     bounds_ = CellWindow{};
@@ -164,6 +193,7 @@ class ColonyRegion {
   }
 
   bool whole_map_ = false;
+  bool too_large_ = false;
   std::size_t grid_cells_ = 0;
   std::size_t size_ = 0;
   std::vector<std::uint8_t> moves_;  // per region cell: bit d when the move in direction d is allowed and stays inside

@@ -13,6 +13,7 @@
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/cell_numbering.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
 
@@ -48,10 +49,12 @@ inline double regionEdgePheromone(const Line& line, const Eigen::Vector2d& from,
 // every other edge takes min tau0. An edge in two regions takes the larger value.
 // When no region edge has a finite value (every region a single line of cells), max tau0
 // and min tau0 are taken as 1.
-// `reuse`: a field whose memory the new one takes over (PheromoneField::reset).
+// `reuse`: a field whose memory the new one takes over (PheromoneField::reset). `stop`: ticked
+// once per row of a favourable region; stopped, `reuse` comes back untouched (the caller reads
+// stop->stopped()).
 inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyRegion& cells,
                                              const std::vector<Cell>& islands, double lambda, double alpha,
-                                             PheromoneField reuse = {}) {
+                                             PheromoneField reuse = {}, StopPoll* stop = nullptr) {
   // (edge, value) of every region edge, in the order the regions are visited; the regions are
   // small, so this is much smaller than a value per edge of the map.
   std::vector<std::pair<std::size_t, double>> region_value;
@@ -64,6 +67,7 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyR
     const int c0 = std::min(p.col, q.col), c1 = std::max(p.col, q.col);
     auto in_region = [&](Cell c) { return c.row >= r0 && c.row <= r1 && c.col >= c0 && c.col <= c1; };
     for (int r = r0; r <= r1; ++r) {
+      if (stop != nullptr && stop->tick(static_cast<std::size_t>(c1 - c0 + 1))) return reuse;
       for (int c = c0; c <= c1; ++c) {
         const Cell from{r, c};
         for (int d = 0; d < kDirections; ++d) {

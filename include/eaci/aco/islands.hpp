@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
 
@@ -30,8 +31,10 @@ inline double islandScore(Cell candidate, Cell start, Cell goal) {
 // - the search stops when E lies inside the circle of the current island (then L_N = E)
 //   or when no candidate is left (E follows directly; the ants then walk that leg).
 // Returns S, the islands, E. The count can exceed N where the straight line is blocked.
+// `stop`: ticked once per row of candidates; stopped, the islands are unfinished (the caller
+// reads stop->stopped()).
 inline std::vector<Cell> paperIslands(const CostGrid& auxiliary, const std::vector<std::uint8_t>& reachable,
-                                      Cell start, Cell goal, int island_count) {
+                                      Cell start, Cell goal, int island_count, StopPoll* stop = nullptr) {
   constexpr double kTolerance = 1e-9;
   std::vector<Cell> islands{start};
   if (start == goal) return islands;
@@ -44,6 +47,7 @@ inline std::vector<Cell> paperIslands(const CostGrid& auxiliary, const std::vect
     double best_score = std::numeric_limits<double>::infinity();
     double best_to_goal = std::numeric_limits<double>::infinity();
     for (int r = current.row - reach; r <= current.row + reach; ++r) {
+      if (stop != nullptr && stop->tick(2 * static_cast<std::size_t>(reach) + 1)) return islands;
       for (int c = current.col - reach; c <= current.col + reach; ++c) {
         const Cell candidate{r, c};
         if (!auxiliary.isFree(candidate) || !reachable[auxiliary.index(candidate)]) continue;

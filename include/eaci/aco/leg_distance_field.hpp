@@ -29,13 +29,16 @@ class LegDistanceField {
 
   // `leg` is the part of the cheapest route from the previous island to `target`.
   // `scratch`: the search's open list, shared by the fields of one plan (null: its own).
-  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target, GridSearchScratch* scratch = nullptr)
+  // `stop`: ticked once per cell of the search (a stopped field is partial; its caller drops it).
+  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target, GridSearchScratch* scratch = nullptr,
+                   StopPoll* stop = nullptr)
       : target_(target) {
     CellPath extent = leg;
     extent.push_back(target);
     GridSearchRequest request;
     request.source = target;
     request.reverse_costs = true;  // costs of routes to the island
+    request.stop = stop;
     request.window = CellWindow::around(grid, extent, std::max(kMinWindowMargin, static_cast<int>(leg.size()) / 2));
     field_ = scratch != nullptr ? searchGrid(grid, request, *scratch) : searchGrid(grid, request);
     outside_ = field_.largest_distance + 1.0;
@@ -53,9 +56,11 @@ class LegDistanceField {
   double outside_ = 0.0;
 };
 
-// One field per island after S (index = the island's index), read by the ant walk.
+// One field per island after S (index = the island's index), read by the ant walk. Stopped by
+// `stop` (every few thousand cells of their searches): the fields made so far, the rest empty;
+// the caller reads stop->stopped() and drops them.
 inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, const CellPath& shortest_route,
-                                                       const std::vector<Cell>& islands) {
+                                                       const std::vector<Cell>& islands, StopPoll* stop = nullptr) {
   std::vector<LegDistanceField> fields(islands.size());
   GridSearchScratch scratch;
   std::size_t from = 0;
@@ -64,7 +69,8 @@ inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, con
     while (to < shortest_route.size() && !(shortest_route[to] == islands[z])) ++to;
     const CellPath leg(shortest_route.begin() + static_cast<std::ptrdiff_t>(from),
                        shortest_route.begin() + static_cast<std::ptrdiff_t>(std::min(to + 1, shortest_route.size())));
-    fields[z] = LegDistanceField(grid, leg, islands[z], &scratch);
+    fields[z] = LegDistanceField(grid, leg, islands[z], &scratch, stop);
+    if (stop != nullptr && stop->stopped()) break;
     from = to;
   }
   return fields;

@@ -20,6 +20,15 @@ namespace eaci {
 // Pheromone never drops below this, so that Eq. 8 stays defined after the penalty of Eq. 24.
 constexpr double kPheromoneFloor = 1e-10;
 
+// Ant colonies keep two doubles per directed edge: 128 bytes per cell of the cells they work
+// on. A colony that would need more than this is refused (about 16.7 million cells, e.g.
+// 4096 x 4096): on the whole map (classic ACO, the paper's islands, region_margin 0) by
+// eaci::plan from the map's size, around a route (geodesic EACI) when its region is built
+// (ColonyRegion::aroundRoute's max_cells).
+constexpr std::size_t kMaxPheromoneBytes = std::size_t{2} << 30;
+constexpr std::size_t kPheromoneBytesPerCell = 2 * sizeof(double) * kDirections;
+constexpr std::size_t kMaxPheromoneCells = kMaxPheromoneBytes / kPheromoneBytesPerCell;
+
 class PheromoneField {
  public:
   PheromoneField() = default;

@@ -25,6 +25,9 @@ struct ColonyResult {
   ColonyRun run;
   ColonyRegion region;          // the cells the ants walked on
   PheromoneField pheromone;     // the field after the last iteration, per cell of `region`
+  // Geodesic EACI: the region within region_margin of the route would hold more than
+  // kMaxPheromoneCells cells (its pheromone more than kMaxPheromoneBytes); no colony was made.
+  bool region_too_large = false;
 };
 
 struct IslandPlan {
@@ -46,40 +49,53 @@ constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
 // (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
 // they never build the auxiliary map.
 // `workspace`: the exact search's buffers, kept by the caller between plans (null: its own).
+// `stop`: ticked by every step's loops (auxiliary map, flood, island scan, the search, the leg
+// fields); once it says stop the plan is unfinished (the caller reads stop->stopped()): a
+// geodesic plan keeps its route when the search had finished.
 inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
-                              GridSearchWorkspace* workspace = nullptr) {
-  if (params.island_strategy == IslandStrategy::kPaper)
-    return {paperIslands(auxiliaryMap(grid, start, goal), reachableFrom(grid, start), start, goal, params.islands), {}, {}};
+                              GridSearchWorkspace* workspace = nullptr, StopPoll* stop = nullptr) {
+  if (params.island_strategy == IslandStrategy::kPaper) {
+    const CostGrid auxiliary = auxiliaryMap(grid, start, goal, AuxiliaryBorder::kFree, stop);
+    if (stop != nullptr && stop->stopped()) return {};
+    const std::vector<std::uint8_t> reachable = reachableFrom(grid, start, stop);
+    if (stop != nullptr && stop->stopped()) return {};
+    return {paperIslands(auxiliary, reachable, start, goal, params.islands, stop), {}, {}};
+  }
   IslandPlan plan;
   GridSearchWorkspace own_workspace;
   GridSearchWorkspace& search = workspace ? *workspace : own_workspace;
   if (grid.cellCount() >= kTwoSidedSearchCells) {
-    plan.route = search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost);
+    plan.route =
+        search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost, stop);
   } else {
-    ShortestPath shortest = shortestPath(grid, start, goal, search);
+    ShortestPath shortest = shortestPath(grid, start, goal, search, stop);
     plan.route = std::move(shortest.path);
     plan.route_cost = shortest.cost;
   }
   if (plan.route.empty()) return plan;
   plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
                                       start, goal, params.islands, params.island_spacing_max);
-  plan.leg_distance = legDistanceFields(grid, plan.route, plan.islands);
+  plan.leg_distance = legDistanceFields(grid, plan.route, plan.islands, stop);
   return plan;
 }
 
 // The cells the colony works on: geodesic islands with region_margin > 0, the cells within that
-// many moves of the route; otherwise the whole map.
-// `reuse`: a region whose memory the new one takes over.
+// many moves of the route (none, tooLarge(), beyond kMaxPheromoneCells); otherwise the whole
+// map (eaci::plan has checked its size). `reuse`: a region whose memory the new one takes
+// over. `stop`: as ColonyRegion's.
 inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params,
-                                 ColonyRegion reuse = {}) {
+                                 ColonyRegion reuse = {}, StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kGeodesic && params.region_margin > 0)
-    return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin, std::move(reuse));
-  return ColonyRegion::wholeMap(grid, std::move(reuse));
+    return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin, std::move(reuse), kMaxPheromoneCells,
+                                     stop);
+  return ColonyRegion::wholeMap(grid, std::move(reuse), stop);
 }
 
 // Steps 1-7: auxiliary map and islands (by params.island_strategy), non-uniform initial pheromone, ants walking leg by
 // leg with the turning-aware heuristic, adaptive update. `should_stop` is also asked between
-// the set-up steps; stopped there, the result has no route and an empty pheromone field.
+// the set-up steps and every few thousand cells inside them (StopPoll); stopped there, the
+// result has no colony route and an empty pheromone field (geodesic islands: search_route is
+// the route when the search had finished).
 // `search_workspace`, `colony_workspace`: buffers and threads kept by the caller between plans
 // (null: this call's own). The result's region and pheromone field hold the colony
 // workspace's memory; a caller that keeps the workspace hands them back to it when done.
@@ -88,11 +104,20 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
                               GridSearchWorkspace* search_workspace = nullptr,
                               ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
+  StopPoll setup_poll(should_stop, 0);  // one counter through all the set-up steps
   const auto stopped_in_setup = [&] {
-    if (should_stop && should_stop(0)) result.run.interrupted = true;
+    if (setup_poll.stopped() || setup_poll.askNow()) result.run.interrupted = true;
     return result.run.interrupted;
   };
-  IslandPlan islands = planIslands(grid, start, goal, params, search_workspace);
+  IslandPlan islands = planIslands(grid, start, goal, params, search_workspace, &setup_poll);
+  if (setup_poll.stopped()) {  // geodesic: the search's route if it had finished (else empty)
+    result.run.interrupted = true;
+    if (!islands.route.empty()) {
+      result.waypoints = islands.islands;
+      result.search_route = islands.route;
+    }
+    return result;
+  }
   if (params.island_strategy == IslandStrategy::kGeodesic && islands.route.empty()) {
     result.goal_unreachable = true;
     return result;
@@ -100,12 +125,20 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   result.waypoints = islands.islands;
   result.search_route = islands.route;
   if (stopped_in_setup()) return result;
-  ColonyRegion region =
-      colonyRegion(grid, islands, params, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{});
+  ColonyRegion region = colonyRegion(grid, islands, params,
+                                     colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}, &setup_poll);
+  if (region.tooLarge()) {
+    result.region_too_large = true;
+    return result;
+  }
+  if (stopped_in_setup()) return result;
   result.pheromone =
       initialIslandPheromone(grid, region, result.waypoints, params.lambda, params.alpha,
-                             colony_workspace ? std::move(colony_workspace->pheromone) : PheromoneField{});
-  if (stopped_in_setup()) return result;
+                             colony_workspace ? std::move(colony_workspace->pheromone) : PheromoneField{}, &setup_poll);
+  if (stopped_in_setup()) {
+    result.pheromone = PheromoneField{};
+    return result;
+  }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_distance));
   if (observer) observer(0, result.pheromone, setup.region);
@@ -123,11 +156,17 @@ inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal,
                                     ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
   result.waypoints = {start, goal};
+  StopPoll setup_poll(should_stop, 0);
+  ColonyRegion region =
+      ColonyRegion::wholeMap(grid, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}, &setup_poll);
+  if (setup_poll.stopped()) {  // the colony asks again before its first iteration
+    result.run.interrupted = true;
+    return result;
+  }
   if (colony_workspace) result.pheromone = std::move(colony_workspace->pheromone);
   result.pheromone.reset(grid.cellCount(), params.aco_tau0, params.alpha);
-  WalkSetup setup(grid,
-                  ColonyRegion::wholeMap(grid, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}),
-                  result.pheromone, result.waypoints, HeuristicRule::kGoalDistance, params.beta, params.epsilon);
+  WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
+                  params.beta, params.epsilon);
   if (observer) observer(0, result.pheromone, setup.region);
   Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal),
                 std::numeric_limits<double>::infinity(), colony_workspace);

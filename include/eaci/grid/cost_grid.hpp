@@ -6,9 +6,13 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
@@ -16,6 +20,21 @@
 #include "eaci/grid/moves.hpp"
 
 namespace eaci {
+
+// The most cells a grid may have: 2^30 (32768 x 32768, 1 GiB of cell bytes). Cells are
+// numbered with 32-bit indices throughout (searches, regions, queues), and UINT32_MAX means
+// "none" (ColonyRegion::kNone): staying far below 2^32 keeps every index, and every index plus
+// a move's step, clear of that mark and of wrapping round. A plan's buffers on such a map
+// already take tens of GiB (11 bytes a cell for a search, more for a colony).
+constexpr std::size_t kMaxGridCells = std::size_t{1} << 30;
+
+// "map of W x H cells (N) is larger than the cap of kMaxGridCells cells".
+inline std::string gridTooLargeError(long long width, long long height) {
+  std::ostringstream e;
+  e << "map of " << width << " x " << height << " cells (" << width * height << ") is larger than the cap of "
+    << kMaxGridCells << " cells (kMaxGridCells: 32-bit cell indices)";
+  return e.str();
+}
 
 // What a cell's cost c adds to a move into it, as in global_planner: the move costs
 // step_length x (neutral_cost + cost_factor x c) / neutral_cost. With c = 0 a move costs its
@@ -41,9 +60,11 @@ class CostGrid {
   static constexpr std::uint8_t kObstacle = 255;  // the cell byte of an obstacle; others are costs
 
   CostGrid() = default;
+  // Throws std::invalid_argument for a negative size and std::length_error for one of more
+  // than kMaxGridCells cells (eaci::plan refuses those maps before it makes a grid).
   CostGrid(int width, int height, bool allow_corner_cutting, CostRule rule = {})
       : width_(width), height_(height), allow_corner_cutting_(allow_corner_cutting),
-        cells_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {
+        cells_(checkedCellCount(width, height), 0) {
     setCostRule(rule);
   }
 
@@ -98,11 +119,28 @@ class CostGrid {
   // The cost 0..254 of a free cell.
   std::uint8_t cost(Cell c) const { return cells_[index(c)]; }
   void setCost(Cell c, std::uint8_t cost) { cells_[index(c)] = cost < kObstacle ? cost : kObstacle - 1; }
+  // Throws std::invalid_argument for a rule that would make a move cost less than its length
+  // (neutral_cost not > 0, cost_factor < 0, NaN or infinite values) or cost an infinite
+  // amount: the octile and landmark bounds of the searches assume no move costs less than its
+  // length. The grid keeps its rule then.
   void setCostRule(CostRule rule) {
+    std::array<double, kObstacle> factor{};
+    factor[0] = 1.0;  // exactly: a move into a cell of cost 0 costs its length
+    bool finite = std::isfinite(rule.neutral_cost) && rule.neutral_cost > 0 && std::isfinite(rule.cost_factor) &&
+                  rule.cost_factor >= 0;
+    for (std::size_t c = 1; finite && c < factor.size(); ++c) {
+      factor[c] = (rule.neutral_cost + rule.cost_factor * static_cast<double>(c)) / rule.neutral_cost;
+      finite = std::isfinite(factor[c]);
+    }
+    if (!finite) {
+      std::ostringstream e;
+      e << "cost rule neutral_cost " << rule.neutral_cost << ", cost_factor " << rule.cost_factor
+        << " refused: it needs neutral_cost > 0 and cost_factor >= 0, both finite, so that every move costs at "
+           "least its length (and a finite amount)";
+      throw std::invalid_argument(e.str());
+    }
     rule_ = rule;
-    cell_factor_[0] = 1.0;  // exactly: a move into a cell of cost 0 costs its length
-    for (std::size_t c = 1; c < cell_factor_.size(); ++c)
-      cell_factor_[c] = (rule.neutral_cost + rule.cost_factor * static_cast<double>(c)) / rule.neutral_cost;
+    cell_factor_ = factor;
   }
 
   // The move rule: the target must be free; a diagonal move that would pass
@@ -135,6 +173,15 @@ class CostGrid {
   double moveCostInto(std::size_t to_index, int dir) const { return stepLength(dir) * cell_factor_[cells_[to_index]]; }
 
  private:
+  static std::size_t checkedCellCount(int width, int height) {
+    if (width < 0 || height < 0)
+      throw std::invalid_argument("a grid of " + std::to_string(width) + " x " + std::to_string(height) +
+                                  " cells: sizes must not be negative");
+    const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    if (cells > kMaxGridCells) throw std::length_error(gridTooLargeError(width, height));
+    return cells;
+  }
+
   int width_ = 0;
   int height_ = 0;
   bool allow_corner_cutting_ = false;

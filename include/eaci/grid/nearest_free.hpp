@@ -3,33 +3,76 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <functional>
 #include <optional>
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/grid_view.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
 
 // The free cell of `view` nearest to `cell` (Euclidean distance between centres, in cells) within
 // `radius_cells`: `cell` itself if free; of equally near cells the first in row-major order;
 // none if no free cell lies within the radius. `cell` may lie off the map.
-inline std::optional<Cell> nearestFreeCell(const GridView& view, Cell cell, double radius_cells) {
+//
+// The search goes outwards ring by ring (ring k: the cells k rows or columns away, the nearest
+// of them exactly k away) and ends once no later ring can hold a cell as near as the best
+// found: for an answer d away it visits the rings up to d, about (2 d + 1)^2 cells, whatever
+// the radius.
+// `should_stop` (a std::function<bool()>, a StopCheck, any callable, or empty) is asked every
+// StopPoll::kWorkBetweenChecks cells visited; once it says stop the answer is none (nullopt),
+// as if no free cell lay within the radius: the caller tells the two apart by its own check.
+template <class Check = std::function<bool()>>
+std::optional<Cell> nearestFreeCell(const GridView& view, Cell cell, double radius_cells,
+                                    const Check& should_stop = Check{}) {
   if (view.isFree(cell)) return cell;
   if (!(radius_cells >= 0)) return std::nullopt;  // also NaN
-  const double reach_real = std::floor(std::min(radius_cells, double(view.width() + view.height())));
-  const int reach = static_cast<int>(reach_real);
+  const long long row = cell.row, col = cell.col, height = view.height(), width = view.width();
+  if (height <= 0 || width <= 0) return std::nullopt;
+  // The first ring that touches the map: the Chebyshev distance from `cell` to it.
+  const long long first_ring = std::max({0LL, -row, row - (height - 1), -col, col - (width - 1)});
+  // Every map cell lies within first_ring + width + height rings (also bounds an infinite radius).
+  const long long reach = static_cast<long long>(
+      std::floor(std::min(radius_cells, double(first_ring) + double(width) + double(height))));
+  StopPoll poll(should_stop);
   std::optional<Cell> best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int dr = -reach; dr <= reach; ++dr) {
-    for (int dc = -reach; dc <= reach; ++dc) {
-      const long long row = static_cast<long long>(cell.row) + dr, col = static_cast<long long>(cell.col) + dc;
-      if (row < 0 || col < 0 || row >= view.height() || col >= view.width()) continue;
-      const double distance = std::hypot(dr, dc);
-      const Cell candidate{static_cast<int>(row), static_cast<int>(col)};
-      if (distance > radius_cells || distance >= best_distance || !view.isFree(candidate)) continue;
-      best = candidate;
-      best_distance = distance;
+  long long best_squared = 0;  // dr^2 + dc^2 of `best`: exact, so ties are exact
+  // Ranks a candidate: nearer first, then the first in row-major order.
+  const auto consider = [&](long long r, long long c) {
+    const long long dr = r - row, dc = c - col;
+    const long long squared = dr * dr + dc * dc;
+    if (best && (squared > best_squared || (squared == best_squared && (r > best->row || (r == best->row && c > best->col)))))
+      return;
+    if (std::hypot(double(dr), double(dc)) > radius_cells) return;  // the same test as a scan of the square
+    const Cell candidate{static_cast<int>(r), static_cast<int>(c)};
+    if (!view.isFree(candidate)) return;
+    best = candidate;
+    best_squared = squared;
+  };
+  for (long long k = first_ring; k <= reach; ++k) {
+    // Ring k's cells are at least k away: none can beat (or tie) a best nearer than that.
+    if (best && best_squared < k * k) break;
+    const bool top_on_map = row - k >= 0, bottom_on_map = row + k < height;
+    const bool left_on_map = col - k >= 0, right_on_map = col + k < width;
+    if (!top_on_map && !bottom_on_map && !left_on_map && !right_on_map) break;  // every map cell seen
+    const long long r0 = std::max(0LL, row - k), r1 = std::min(height - 1, row + k);
+    const long long c0 = std::max(0LL, col - k), c1 = std::min(width - 1, col + k);
+    // Row-major order within the ring: the top row, the two sides row by row, the bottom row.
+    if (top_on_map) {
+      if (poll.tick(static_cast<std::size_t>(c1 - c0 + 1))) return std::nullopt;
+      for (long long c = c0; c <= c1; ++c) consider(row - k, c);
+    }
+    if (left_on_map || right_on_map) {
+      for (long long r = std::max(r0, row - k + 1); r <= std::min(r1, row + k - 1); ++r) {
+        if (poll.tick(2)) return std::nullopt;
+        if (left_on_map) consider(r, col - k);
+        if (right_on_map) consider(r, col + k);
+      }
+    }
+    if (bottom_on_map && k > 0) {
+      if (poll.tick(static_cast<std::size_t>(c1 - c0 + 1))) return std::nullopt;
+      for (long long c = c0; c <= c1; ++c) consider(row + k, c);
     }
   }
   return best;

@@ -10,11 +10,13 @@
 
 namespace eaci {
 
-// Flag per cell (index order of the grid): 1 if reachable from `from`.
-inline std::vector<std::uint8_t> reachableFrom(const CostGrid& grid, Cell from) {
+// Flag per cell (index order of the grid): 1 if reachable from `from`. `stop`: ticked once per
+// cell flooded; once it says stop the flags are partial (the caller reads stop->stopped()).
+inline std::vector<std::uint8_t> reachableFrom(const CostGrid& grid, Cell from, StopPoll* stop = nullptr) {
   GridSearchRequest request;
   request.source = from;
   request.order = SearchOrder::kAnyOrder;
+  request.stop = stop;
   const std::vector<double> distance = searchGrid(grid, request).distance;
   std::vector<std::uint8_t> reached(distance.size(), 0);
   for (std::size_t i = 0; i < distance.size(); ++i) reached[i] = std::isfinite(distance[i]) ? 1 : 0;

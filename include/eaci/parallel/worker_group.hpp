@@ -6,8 +6,14 @@
 // costs about as much: a thread that finds nothing to do, and the caller waiting for the
 // others, first watch for up to kSpin before they go to sleep. On a busy machine (move_base's
 // own threads, a simulation) a worker may still wake late: share() does not wait for it.
+//
+// Nothing here ends the process: an exception a job throws, on any thread, reaches the caller
+// of run()/share() (the first one, rethrown there), and a thread that cannot be started
+// (std::system_error, e.g. a thread limit, or std::bad_alloc) leaves the group with the threads it did start
+// (workers(); at least the caller's), so the work runs on fewer threads.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -16,19 +22,36 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
 namespace eaci {
 
+// Starts a thread running `body` (std::thread's constructor: throws std::system_error when it
+// cannot). Replaceable for tests that make thread starts fail.
+using ThreadStarter = std::function<std::thread(std::function<void()> body)>;
+
 class WorkerGroup {
  public:
   using Job = std::function<void(int worker)>;
 
-  // `workers` threads in all, the calling thread included (so workers - 1 are started).
-  explicit WorkerGroup(int workers) {
-    for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { serve(w); });
+  // `workers` threads in all, the calling thread included (so workers - 1 are started; fewer
+  // when a start fails, see workers()). `start`: how a thread is started (empty: std::thread).
+  explicit WorkerGroup(int workers, const ThreadStarter& start = {}) {
+    threads_.reserve(static_cast<std::size_t>(std::max(0, workers - 1)));
+    for (int w = 1; w < workers; ++w) {
+      try {
+        std::function<void()> body = [this, w] { serve(w); };
+        threads_.push_back(start ? start(std::move(body)) : std::thread(std::move(body)));
+      } catch (const std::exception&) {  // std::system_error (no thread), std::bad_alloc (its state)
+        break;  // no more threads: the group works on those it has
+      }
+    }
   }
+  // The workers the group has, the calling thread included: run() calls job(w) for w in
+  // [0, workers()).
+  int workers() const { return static_cast<int>(threads_.size()) + 1; }
   WorkerGroup(const WorkerGroup&) = delete;
   WorkerGroup& operator=(const WorkerGroup&) = delete;
   ~WorkerGroup() {

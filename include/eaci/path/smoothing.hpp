@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
 
@@ -109,8 +110,11 @@ inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
 // Greedy string pulling: from each kept cell, the farthest later cell of the route reachable
 // by an allowed shortcut (the search stops at the first that is not). Returns the kept cells,
 // start and goal included; consecutive kept cells are joined by straight segments.
-// A route that is not 8-connected is returned as it is.
-inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route) {
+// A route that is not 8-connected is returned as it is. The work is up to quadratic in the
+// route's length (each shortcut tried is walked cell by cell): `stop` is ticked by the cells
+// each try walks, and once it says stop the route is smoothed up to where it got and goes on
+// cell by cell from there (as valid as the whole smoothed route).
+inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPoll* stop = nullptr) {
   if (route.size() < 3 || !std::isfinite(routeCost(grid, route))) return route;
   const auto moveCost = [&](std::size_t k) {  // the move into route[k]
     const int dir = directionBetween(route[k - 1], route[k]);
@@ -123,6 +127,10 @@ inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route) {
     double stretch_cost = moveCost(i + 1);
     int stretch_peak = std::max<int>(grid.cost(route[i]), grid.cost(route[i + 1]));
     for (std::size_t j = i + 2; j < route.size(); ++j) {
+      if (stop != nullptr && stop->tick(2 * (j - i))) {  // two walks of about j - i cells
+        kept.insert(kept.end(), route.begin() + static_cast<std::ptrdiff_t>(i) + 1, route.end());
+        return kept;
+      }
       stretch_cost += moveCost(j);
       stretch_peak = std::max<int>(stretch_peak, grid.cost(route[j]));
       if (segmentCost(grid, route[i], route[j]) > stretch_cost + 1e-9) break;

@@ -16,20 +16,25 @@ struct ShortestPath {
   double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost)
   double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
   CellPath path;                                            // start first, goal last
+  bool stopped = false;  // ended by the stop check before the goal was settled (found = false)
 };
 
 // A* from start to goal: a cheapest route (on a binary map, a shortest one). Returns found = false when the goal is unreachable or either
 // cell is off the map or blocked. `workspace` keeps the search's buffers for the next call
-// (same answers with or without it).
-inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, GridSearchWorkspace& workspace) {
+// (same answers with or without it). `stop`: ticked once per cell taken off the open list
+// (GridSearchRequest::stop); stopped, the result has found = false and stopped = true.
+inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, GridSearchWorkspace& workspace,
+                                 StopPoll* stop = nullptr) {
   ShortestPath result;
   if (!grid.isFree(start) || !grid.isFree(goal)) return result;
   GridSearchRequest request;
   request.source = start;
   request.target = goal;
   request.keep_moves = true;
+  request.stop = stop;
   workspace.search(grid, request);
-  if (!workspace.reached(goal)) return result;
+  result.stopped = workspace.stopped();
+  if (result.stopped || !workspace.reached(goal)) return result;
   result.found = true;
   result.cost = workspace.at(goal);
   result.path = workspace.routeTo(goal);

@@ -33,6 +33,7 @@
 #include <optional>
 #include <vector>
 
+#include "eaci/parallel/stop_poll.hpp"
 #include "eaci/parallel/worker_group.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/bucket_queue.hpp"
@@ -90,6 +91,9 @@ struct GridSearchRequest {
   bool keep_moves = false;     // remember the move into each cell, for routeTo()
   SearchOrder order = SearchOrder::kByDistance;
   bool reverse_costs = false;  // costs of routes *to* the source (see searchGrid)
+  // The caller's stop check, ticked once per cell taken off the open list (or flooded); once
+  // it says stop the search ends there, with the labels it has (GridSearchResult::stopped).
+  StopPoll* stop = nullptr;
 };
 
 struct GridSearchResult {
@@ -97,6 +101,7 @@ struct GridSearchResult {
   std::vector<double> distance;        // per window slot: route cost from the source; +infinity = not reached
   std::vector<std::uint8_t> came_dir;  // per window slot (keep_moves): the move into it, kNoMove at the source
   double largest_distance = 0.0;       // over the settled cells
+  bool stopped = false;                // ended by the request's stop check: distances are partial
   static constexpr std::uint8_t kNoMove = 0xFF;
 
   double at(Cell c) const {
@@ -366,11 +371,15 @@ void relaxMoves(const CostGrid& grid, const SearchNeighbourhood& around, std::ui
 }
 
 // The loop of every search, on labels kept by `Labels`: distance(slot) (+infinity when not
-// reached) and label(slot, distance, move). Returns the largest settled distance.
+// reached) and label(slot, distance, move). Returns the largest settled distance; `stopped`
+// says whether the request's stop check ended it.
 template <class Labels>
 double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, const CellWindow& window, Labels& labels,
-                     SearchQueue& open, std::vector<std::uint32_t>& frontier) {
+                     SearchQueue& open, std::vector<std::uint32_t>& frontier, bool& stopped) {
+  stopped = false;
   if (!grid.isFree(request.source) || !window.contains(request.source)) return 0.0;
+  StopPoll never;
+  StopPoll& poll = request.stop != nullptr ? *request.stop : never;
   const SearchNeighbourhood around(grid, window);
   const auto source = static_cast<std::uint32_t>(window.slot(request.source));
   labels.label(source, 0.0, GridSearchResult::kNoMove);
@@ -379,6 +388,10 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
     frontier.clear();
     frontier.push_back(source);
     while (!frontier.empty()) {
+      if (poll.tick()) {
+        stopped = true;
+        return 0.0;
+      }
       const std::uint32_t slot = frontier.back();
       frontier.pop_back();
       const Cell here = window.cellAt(slot);
@@ -403,6 +416,10 @@ double runGridSearch(const CostGrid& grid, const GridSearchRequest& request, con
   const auto stale = [&labels](const SearchEntry& e) { return e.cost > labels.distance(e.slot); };
   SearchEntry top;
   while (open.pop(top, stale)) {
+    if (poll.tick()) {  // counts stale entries too: they cost a pop
+      stopped = true;
+      break;
+    }
     if (stale(top)) continue;  // settled before, by a shorter way
     largest_distance = std::max(largest_distance, top.cost);
     if (top.slot == target_slot) break;
@@ -459,6 +476,7 @@ struct MeetingSide {
   std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
   const MeetingBounds* bounds;
   bool forward;
+  StopPoll stop;          // this side's own (the sides may run on two threads)
   std::size_t taken = 0;  // cells taken off the open list (a cell labelled again counts again)
 
   // The window is the whole grid: a slot is the grid index. span / 2 keeps it >= 0.
@@ -470,12 +488,13 @@ struct MeetingSide {
   void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, slot, g), BucketEntry{g, slot}); }
 
   // Takes up to `cells` cells off the open list; labels only its own slots, reads nothing of
-  // the other side. Adds the cells it took to `taken`.
+  // the other side. Adds the cells it took to `taken`. Ends early once `stop` says so.
   void round(const CostGrid& grid, const CellWindow& window, const SearchNeighbourhood& around, int cells) {
     touched->clear();
     const auto is_stale = [this](const BucketEntry& e) { return stale(e); };
     BucketEntry top;
     for (int n = 0; n < cells && open->pop(top, is_stale); ++n, ++taken) {
+      if (stop.tick()) return;
       relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, !forward, labels,
                  [this](std::uint32_t j, Cell next, double g) {
                    touched->push_back(j);
@@ -514,7 +533,8 @@ inline GridSearchResult searchGrid(const CostGrid& grid, const GridSearchRequest
   result.distance.assign(result.window.size(), std::numeric_limits<double>::infinity());
   if (request.keep_moves) result.came_dir.assign(result.window.size(), GridSearchResult::kNoMove);
   detail::ResultLabels labels{result.distance.data(), request.keep_moves ? result.came_dir.data() : nullptr};
-  result.largest_distance = detail::runGridSearch(grid, request, result.window, labels, scratch.open, scratch.frontier);
+  result.largest_distance =
+      detail::runGridSearch(grid, request, result.window, labels, scratch.open, scratch.frontier, result.stopped);
   return result;
 }
 
@@ -533,7 +553,7 @@ class GridSearchWorkspace {
     window_ = request.window.value_or(CellWindow::whole(grid));
     prepare(window_.size());
     Labels labels = currentLabels();
-    largest_distance_ = detail::runGridSearch(grid, request, window_, labels, open_, frontier_);
+    largest_distance_ = detail::runGridSearch(grid, request, window_, labels, open_, frontier_, stopped_);
   }
 
   // A cheapest route from `source` to `target` (both free) by two searches that meet in the
@@ -548,21 +568,26 @@ class GridSearchWorkspace {
   // same time where a second thread, kept with the workspace, claims one (WorkerGroup::share);
   // the rounds, and so the route, are the same on one thread.
   // Empty when the target cannot be reached. at() and routeTo() do not answer for it.
+  // `stop`: the caller's stop check; each side ticks a poll of its own (StopPoll::
+  // forAnotherThread) once per cell it takes, and once either says stop the search ends
+  // with no route (stopped() true, `stop` latched).
   CellPath cheapestRouteBetween(const CostGrid& grid, Cell source, Cell target, int threads = 1,
-                                double* cost = nullptr) {
+                                double* cost = nullptr, StopPoll* stop = nullptr) {
     window_ = CellWindow::whole(grid);
     prepare(window_.size());
     if (backward_.capacity < window_.size()) backward_.allocate(window_.size());
     CellPath route;
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
     expanded_ = 0;
+    stopped_ = false;
     if (!grid.isFree(source) || !grid.isFree(target)) return route;
     const std::shared_ptr<const Landmarks> landmarks = landmarks_ ? landmarks_->usableFor(grid) : nullptr;
     const detail::MeetingBounds bounds(source, target, grid.index(source), grid.index(target), landmarks.get());
     const double span = bounds.span;
+    const StopPoll side_stop = stop != nullptr ? stop->forAnotherThread() : StopPoll{};
     detail::MeetingSide<Labels> sides[2] = {
-        {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true},
-        {backward_.of(generation_), &backward_open_, &touched_[1].cells, &bounds, false}};
+        {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true, side_stop.forAnotherThread()},
+        {backward_.of(generation_), &backward_open_, &touched_[1].cells, &bounds, false, side_stop.forAnotherThread()}};
     for (int side = 0; side < 2; ++side) {
       const Cell end = side == 0 ? source : target;
       const auto slot = static_cast<std::uint32_t>(window_.slot(end));
@@ -598,6 +623,10 @@ class GridSearchWorkspace {
         run_side(0);
         run_side(1);
       }
+      if (sides[0].stop.stopped() || sides[1].stop.stopped()) {
+        stopped_ = true;
+        break;
+      }
       for (int side = 0; side < 2; ++side)
         for (std::uint32_t j : touched_[side].cells) {
           const double through = sides[0].labels.distance(j) + sides[1].labels.distance(j);
@@ -608,6 +637,10 @@ class GridSearchWorkspace {
         }
     }
     expanded_ = sides[0].taken + sides[1].taken;
+    if (stopped_) {
+      if (stop != nullptr) stop->latch();
+      return route;
+    }
     if (cost != nullptr) *cost = mu;
     if (!std::isfinite(mu)) return route;
     route = routeTo(window_.cellAt(meeting));  // from the source to the meeting cell
@@ -634,6 +667,9 @@ class GridSearchWorkspace {
 
   // The cells the last cheapestRouteBetween took off its two open lists (its work, for benchmarks).
   std::size_t expandedCells() const { return expanded_; }
+  // The last search (or cheapestRouteBetween) was ended by its stop check: its labels are
+  // partial, and cheapestRouteBetween returned no route.
+  bool stopped() const { return stopped_; }
 
   const CellWindow& window() const { return window_; }
   double largestDistance() const { return largest_distance_; }  // over the settled cells
@@ -730,6 +766,7 @@ class GridSearchWorkspace {
   std::unique_ptr<WorkerGroup> meeting_workers_;
   std::unique_ptr<LandmarkCache> landmarks_;  // useLandmarks
   std::size_t expanded_ = 0;                   // expandedCells
+  bool stopped_ = false;                       // stopped()
   CellWindow window_;
   double largest_distance_ = 0.0;
   alignas(64) detail::SearchQueue open_;

@@ -20,16 +20,34 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/worker_group.hpp"
 #include "eaci/search/bucket_queue.hpp"
 
 namespace eaci {
+
+// Landmark tables take 4 bytes per landmark and cell; no more than this is made (256 MiB, e.g.
+// 16 landmarks on 2048 x 2048 cells, 1 on 8192 x 8192). Making them also needs 17 bytes per
+// cell of scratch while it runs, whatever the count.
+constexpr std::size_t kMaxLandmarkBytes = std::size_t{256} << 20;
+
+// How many of `requested` landmarks fit in kMaxLandmarkBytes on a map of `cells` cells (0 if
+// not even one does).
+inline int landmarksThatFit(std::size_t cells, int requested) {
+  if (requested <= 0) return 0;
+  if (cells == 0) return requested;
+  const std::size_t fit = kMaxLandmarkBytes / (cells * sizeof(float));
+  return static_cast<int>(std::min(fit, static_cast<std::size_t>(requested)));
+}
 
 class Landmarks {
  public:
@@ -37,9 +55,11 @@ class Landmarks {
   // free cell near the middle of the free cells, each next one the cell farthest from all
   // chosen so far, all in that cell's connected part of the map. Null when `cancel` became true
   // on the way, or the grid has no free cell; none (count() 0) where route costs are too large
-  // for floats to bound them usefully.
+  // for floats to bound them usefully. `count` is cut to landmarksThatFit (0: null).
   static std::shared_ptr<const Landmarks> compute(const CostGrid& grid, int count,
                                                   const std::atomic<bool>* cancel = nullptr) {
+    count = landmarksThatFit(grid.cellCount(), count);
+    if (count <= 0) return nullptr;
     auto landmarks = std::shared_ptr<Landmarks>(new Landmarks(grid));
     const std::uint8_t* cells = grid.cellBytes();
     std::size_t free_count = 0;
@@ -180,9 +200,18 @@ class Landmarks {
 // the new costmap, so that they hold for both, and costmaps that come and go between the two
 // do not make them again each time. Plans that find none ready search with octile bounds alone:
 // the same costs, though among equally cheap routes they may pick another.
+// Nothing here reaches the plan as an exception: a failure while making them (std::bad_alloc,
+// anything) or a thread that cannot start leaves the cache without new landmarks, says why
+// (lastError()), and the next plan that asks tries again.
 class LandmarkCache {
  public:
-  explicit LandmarkCache(int count) : count_(count) {}
+  // Makes landmarks (Landmarks::compute); replaceable for tests that make it fail.
+  using Maker = std::function<std::shared_ptr<const Landmarks>(const CostGrid&, int count, const std::atomic<bool>* cancel)>;
+
+  // `count` landmarks asked for (cut to landmarksThatFit for each map). `make`, `start`: how
+  // they are made and their thread started (empty: Landmarks::compute, std::thread).
+  explicit LandmarkCache(int count, Maker make = {}, ThreadStarter start = {})
+      : count_(count), make_(std::move(make)), start_(std::move(start)) {}
   LandmarkCache(const LandmarkCache&) = delete;
   LandmarkCache& operator=(const LandmarkCache&) = delete;
   ~LandmarkCache() {
@@ -190,25 +219,41 @@ class LandmarkCache {
     if (worker_.joinable()) worker_.join();
   }
 
+  // The count asked for.
   int count() const { return count_; }
+  // The count it makes (or made) for the last map it was asked about: count() cut to what
+  // fits in kMaxLandmarkBytes on that map (landmarksThatFit); count() before any.
+  int countInUse() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return count_in_use_;
+  }
+  // Why the last attempt to make landmarks failed ("" if it did not).
+  std::string lastError() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_error_;
+  }
 
-  // Landmarks whose bounds hold on `grid`, or null (then making them is under way).
+  // Landmarks whose bounds hold on `grid`, or null (then making them is under way, or none
+  // fit on this map, or they could not be made: see lastError()).
   std::shared_ptr<const Landmarks> usableFor(const CostGrid& grid) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (ready_ && ready_->holdsFor(grid)) return ready_;
-    if (computing_) return nullptr;
+    count_in_use_ = landmarksThatFit(grid.cellCount(), count_);
+    if (computing_ || count_in_use_ == 0) return nullptr;
     if (worker_.joinable()) worker_.join();  // finished: it cleared computing_
-    computing_ = true;
     // The floor is made on the worker thread too, from a copy of the grid and the landmarks
     // held: the plan that asked waits for neither.
     std::shared_ptr<const Landmarks> held = ready_;
-    worker_ = std::thread([this, floor = grid, held] () mutable {
-      if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor);
-      std::shared_ptr<const Landmarks> made = Landmarks::compute(floor, count_, &cancel_);
-      std::lock_guard<std::mutex> done(mutex_);
-      if (made) ready_ = std::move(made);
-      computing_ = false;
-    });
+    try {
+      std::function<void()> body = [this, floor = grid, held, count = count_in_use_]() mutable {
+        make(std::move(floor), held, count);
+      };
+      worker_ = start_ ? start_(std::move(body)) : std::thread(std::move(body));
+      computing_ = true;
+      last_error_.clear();
+    } catch (const std::exception& e) {  // no thread (std::system_error), no memory for the copy
+      last_error_ = std::string("could not start making landmarks: ") + e.what();
+    }
     return nullptr;
   }
 
@@ -223,6 +268,25 @@ class LandmarkCache {
   }
 
  private:
+  // The worker thread's body: catches everything (an exception leaving a thread would end the
+  // process); a failure leaves the landmarks held as they were.
+  void make(CostGrid floor, const std::shared_ptr<const Landmarks>& held, int count) {
+    std::shared_ptr<const Landmarks> made;
+    std::string error;
+    try {
+      if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor);
+      made = make_ ? make_(floor, count, &cancel_) : Landmarks::compute(floor, count, &cancel_);
+    } catch (const std::exception& e) {
+      error = std::string("making landmarks failed: ") + e.what();
+    } catch (...) {
+      error = "making landmarks failed with an unknown exception";
+    }
+    std::lock_guard<std::mutex> done(mutex_);
+    if (made) ready_ = std::move(made);
+    last_error_ = error;
+    computing_ = false;
+  }
+
   // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest).
   static void cheapestOf(const CostGrid& other, CostGrid& into) {
     for (std::size_t i = 0; i < into.cellCount(); ++i) {
@@ -232,9 +296,13 @@ class LandmarkCache {
   }
 
   const int count_;
-  std::mutex mutex_;
+  const Maker make_;
+  const ThreadStarter start_;
+  mutable std::mutex mutex_;
   std::shared_ptr<const Landmarks> ready_;  // under mutex_
   bool computing_ = false;                  // under mutex_
+  int count_in_use_ = count_;               // under mutex_
+  std::string last_error_;                  // under mutex_
   std::thread worker_;
   std::atomic<bool> cancel_{false};
 };
