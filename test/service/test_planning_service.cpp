@@ -47,6 +47,15 @@ ServiceSettings settings() {
   return s;
 }
 
+// A colony that only a stop ends: a million iterations, no early stop, no time limit.
+PlanningService::Configuration unboundedColony() {
+  PlanningService::Configuration config = configuration();
+  config.params.max_iterations = 1000000;
+  config.params.early_stop_iterations = 0;
+  config.options.max_planning_time = 0;
+  return config;
+}
+
 // Octile distance: the length of the shortest 8-connected route on an open grid.
 double octile(int dr, int dc) {
   const int a = std::abs(dr), b = std::abs(dc);
@@ -262,11 +271,7 @@ TEST(PlannerOptions, TheRobotReadyDefaultsAreConfigEaciPlannerYamls) {
 TEST(PlanningService, CancelStopsThePlanInProgressWithTheBestRouteSoFar) {
   Log log;
   PlanningService service(settings(), log.logger());
-  PlanningService::Configuration config = configuration();
-  config.params.max_iterations = 1000000;
-  config.params.early_stop_iterations = 0;
-  config.options.max_planning_time = 0;
-  configure(service, config);
+  configure(service, unboundedColony());
   EXPECT_FALSE(service.cancel());
   const CostmapSnapshot costmap = openCostmap(40, 40);
   auto plan = std::async(std::launch::async, [&] { return service.plan(costmap, request(costmap, {1, 1}, {38, 38})); });
