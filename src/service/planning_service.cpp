@@ -69,7 +69,8 @@ PlanningService::PlanningService(ServiceSettings settings, Logger log)
 
 PlanningService::~PlanningService() {
   cancel();
-  std::lock_guard<std::timed_mutex> lock(workspace_mutex_);  // a plan still running ends first
+  std::unique_lock<std::mutex> lock(turn_mutex_);  // a plan still running ends first
+  turn_free_.wait(lock, [this] { return !planning_; });
   workspace_.reset();
   writer_.reset();
 }
@@ -142,14 +143,29 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
       stop_reason.compare_exchange_strong(none, static_cast<int>(reason));
       return true;
     };
-    std::unique_lock<std::timed_mutex> one_at_a_time(workspace_mutex_, std::defer_lock);
-    if (!timed) {
-      one_at_a_time.lock();
-    } else if (!one_at_a_time.try_lock_until(deadline)) {
-      reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
-      say(LogLevel::kWarn, reply.error);
-      return reply;
+    {
+      std::unique_lock<std::mutex> lock(turn_mutex_);
+      const auto free = [this] { return !planning_; };
+      if (!timed) {
+        turn_free_.wait(lock, free);
+      } else if (!turn_free_.wait_until(lock, deadline, free)) {
+        lock.unlock();
+        reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
+        say(LogLevel::kWarn, reply.error);
+        return reply;
+      }
+      planning_ = true;
     }
+    struct Turn {  // gives the turn back however the plan ends
+      PlanningService& service;
+      ~Turn() {
+        {
+          std::lock_guard<std::mutex> lock(service.turn_mutex_);
+          service.planning_ = false;
+        }
+        service.turn_free_.notify_one();
+      }
+    } turn{*this};
     const PlanCancellation::Scope in_progress(cancellation_);
     reply = planLocked(costmap, request, config, should_stop, stop_reason);
   } catch (const std::bad_alloc&) {

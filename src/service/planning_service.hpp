@@ -5,7 +5,7 @@
 // move_base plugin and the planner node are adapters around it (src/ros/ros_planner.hpp), and
 // it is tested without ROS, under ThreadSanitizer, with injected allocation failures.
 //
-// Locks: plan() takes the workspace lock (one plan at a time), configure() and configuration()
+// Locks: plan() takes the planning turn (one plan at a time), configure() and configuration()
 // a short configuration lock, cancel() the cancellation's own. None of them is held while
 // another is taken, none is held while the caller's costmap lock is taken (the caller copies
 // the costmap before it calls), and move_base may hold its costmap lock while it calls plan():
@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -112,16 +113,20 @@ class PlanningService {
   mutable std::mutex config_mutex_;
   Configuration config_;  // under config_mutex_
 
-  // One plan at a time; the workspace is made again after a plan that threw (its buffers may
-  // be half made).
-  std::timed_mutex workspace_mutex_;
-  std::unique_ptr<eaci::PlannerWorkspace> workspace_;  // under workspace_mutex_
+  // One plan at a time (a flag under a mutex and a condition variable, waited for until the
+  // plan's deadline; a std::timed_mutex would do, but ThreadSanitizer cannot see its
+  // pthread_mutex_clocklock); the workspace is made again after a plan that threw (its buffers
+  // may be half made).
+  std::mutex turn_mutex_;
+  std::condition_variable turn_free_;
+  bool planning_ = false;  // under turn_mutex_; the members below marked "the plan's" belong to the plan holding the turn
+  std::unique_ptr<eaci::PlannerWorkspace> workspace_;  // the plan's
   std::atomic<bool> workspace_suspect_{false};         // a plan threw: make the workspace afresh
   // Rolling-window costmaps (local costmaps) move every update: landmarks would never hold.
-  std::optional<eaci::MapFrame> last_frame_;  // under workspace_mutex_
-  int moves_in_a_row_ = 0;                    // under workspace_mutex_
-  bool rolling_ = false;                      // under workspace_mutex_
-  int landmarks_in_use_ = -1;                 // under workspace_mutex_; -1 = not yet logged
+  std::optional<eaci::MapFrame> last_frame_;  // the plan's
+  int moves_in_a_row_ = 0;                    // the plan's
+  bool rolling_ = false;                      // the plan's
+  int landmarks_in_use_ = -1;                 // the plan's; -1 = not yet logged
 
   PlanCancellation cancellation_;
 
