@@ -166,8 +166,6 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   using detail::failure;
   const std::string parameter_error = validationError(params);
   if (!parameter_error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, "invalid parameter: " + parameter_error);
-  if (grid.cellCount() > kMaxGridCells)  // a CostGrid refuses to be made so large; checked again here
-    return failure(algorithm, PlanStatus::kInvalidInput, gridTooLargeError(grid.width(), grid.height()));
   const CostRule rule = costRule(params);
   if (grid.costRule().neutral_cost != rule.neutral_cost || grid.costRule().cost_factor != rule.cost_factor) {
     CostGrid ruled = grid;

@@ -65,8 +65,8 @@ RosPlanner::~RosPlanner() {
 
 bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                           double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+  plan.clear();
   try {
-    plan.clear();
     CostmapSnapshot costmap = setup_.costmap();
     for (const auto* pose : {&start, &goal}) {
       if (pose->header.frame_id != costmap.frame_id) {
@@ -75,45 +75,55 @@ bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometr
         return false;
       }
     }
-    PlanRequest request;
-    request.start = {start.pose.position.x, start.pose.position.y};
-    request.goal = {goal.pose.position.x, goal.pose.position.y};
-    request.tolerance = tolerance;
-    request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
-    const PlanReply reply = service_->plan(std::move(costmap), request);
-    if (!reply.ok) return false;  // the service said why
-    geometry_msgs::PoseStamped target = goal;
-    target.pose.position.x = reply.goal.x();
-    target.pose.position.y = reply.goal.y();
-    const MapFrame frame = rosFrame(reply);
-    const nav_msgs::Path path =
-        toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode);
-    plan = path.poses;
-    if (reply.options.publish_plan) plan_pub_.publish(path);
-    if (!reply.result.pheromone.empty())
-      pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
-    return true;
+    return planOn(std::move(costmap), start, goal, tolerance, plan);
   } catch (const std::exception& e) {
-    plan.clear();
-    try {
-      ROS_ERROR("%s: no plan: %s", setup_.who.c_str(), e.what());
-    } catch (...) {
-    }
+    failedWith(e.what(), plan);
   } catch (...) {
-    plan.clear();
+    failedWith("an unknown exception", plan);
   }
   return false;
 }
 
+bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start,
+                        const geometry_msgs::PoseStamped& goal, double tolerance,
+                        std::vector<geometry_msgs::PoseStamped>& plan) {
+  PlanRequest request;
+  request.start = {start.pose.position.x, start.pose.position.y};
+  request.goal = {goal.pose.position.x, goal.pose.position.y};
+  request.tolerance = tolerance;
+  request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
+  const PlanReply reply = service_->plan(std::move(costmap), request);
+  if (!reply.ok) return false;  // the service said why
+  geometry_msgs::PoseStamped target = goal;
+  target.pose.position.x = reply.goal.x();
+  target.pose.position.y = reply.goal.y();
+  const MapFrame frame = rosFrame(reply);
+  const nav_msgs::Path path =
+      toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode);
+  plan = path.poses;
+  if (reply.options.publish_plan) plan_pub_.publish(path);
+  if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
+  return true;
+}
+
+void RosPlanner::failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+  plan.clear();
+  try {
+    ROS_ERROR("%s: no plan: %s", setup_.who.c_str(), what);
+  } catch (...) {
+  }
+}
+
 bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
   try {
-    std::string frame;
+    CostmapSnapshot costmap;
     try {
-      frame = setup_.costmap().frame_id;
+      costmap = setup_.costmap();
     } catch (const std::exception& e) {
       ROS_ERROR("%s: make_plan: %s", setup_.who.c_str(), e.what());
       return true;
     }
+    const std::string frame = costmap.frame_id;
     response.plan.header.frame_id = frame;
     response.plan.header.stamp = ros::Time::now();
     geometry_msgs::PoseStamped start = request.start, goal = request.goal;
@@ -129,10 +139,11 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
       }
     }
     // The request's own tolerance when > 0, else default_tolerance.
-    makePlan(start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
+    planOn(std::move(costmap), start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
   } catch (const std::exception& e) {
-    ROS_ERROR("%s: make_plan: %s", setup_.who.c_str(), e.what());
+    failedWith(e.what(), response.plan.poses);
   } catch (...) {
+    failedWith("an unknown exception", response.plan.poses);
   }
   return true;
 }

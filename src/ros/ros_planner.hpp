@@ -56,6 +56,10 @@ class RosPlanner {
   RosPlannerOptions options() const { return config_->options(); }
 
  private:
+  // Plans on `costmap` (poses already in its frame), publishes; false when the service said no.
+  bool planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+              double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
+  void failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   bool onSaveCostmap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);

@@ -88,9 +88,12 @@ void PlanningService::configure(const eaci::Parameters& params, const RosPlanner
     Configuration config{params, options, error};
     std::lock_guard<std::mutex> lock(config_mutex_);
     config_ = std::move(config);
-  } catch (...) {
+  } catch (...) {  // no memory for the copy: plans are refused until a configuration is stored
     std::lock_guard<std::mutex> lock(config_mutex_);
-    config_.error = "the new parameters could not be stored (out of memory)";
+    try {
+      config_.error = "the new parameters could not be stored (out of memory)";
+    } catch (...) {  // not even the sentence: the configuration in force stays
+    }
   }
 }
 
@@ -186,7 +189,8 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   if (workspace_suspect_.exchange(false) || !workspace_) {
     workspace_.reset();
     workspace_ = std::make_unique<eaci::PlannerWorkspace>();
-    landmarks_in_use_ = -1;
+    landmarks_reported_ = -1;
+    landmark_error_reported_.clear();
   }
   const eaci::Parameters& params = config.params;
   const RosPlannerOptions& options = config.options;
@@ -264,12 +268,13 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                    eaci::formatNumber(tolerance) + " m of it");
   }
 
-  useLandmarksFor(costmap, options.landmarks);
+  useLandmarksFor(frame, options.landmarks);
   eaci::PlanOptions plan_options;
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
   reply.result = eaci::plan(view, *start_cell, *reachable_goal, options.algorithm, params, plan_options);
+  reportLandmarks(frame);
   if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
   if (!reply.result.success()) {
     if (!reply.result.interrupted) return failure(reply.result.error);
@@ -293,8 +298,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   return finish(reply);
 }
 
-void PlanningService::useLandmarksFor(const CostmapSnapshot& costmap, int requested) {
-  const eaci::MapFrame& frame = costmap.frame;
+void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested) {
   if (last_frame_ && last_frame_->width == frame.width && last_frame_->height == frame.height &&
       last_frame_->resolution == frame.resolution) {
     moves_in_a_row_ = last_frame_->origin != frame.origin ? moves_in_a_row_ + 1 : 0;
@@ -307,16 +311,22 @@ void PlanningService::useLandmarksFor(const CostmapSnapshot& costmap, int reques
     say(LogLevel::kInfo, "the costmap moves with the robot (a rolling window): no landmarks on it, they would be made "
                          "again for every plan");
   }
-  const std::size_t cells = costmap.cells.size();
-  const int fitting = eaci::landmarksThatFit(cells, requested);
-  const int count = rolling_ ? 0 : fitting;
-  if (count != landmarks_in_use_ && fitting < requested && !rolling_)
-    say(LogLevel::kWarn, std::to_string(requested) + " landmarks on " + sizeOf(frame) + " would need " +
-                             std::to_string(static_cast<unsigned long long>(requested) * cells * 4 / (1 << 20)) +
-                             " MiB: making " + std::to_string(fitting) + " (the cap is " +
+  workspace_->search.useLandmarks(rolling_ ? 0 : requested);
+}
+
+void PlanningService::reportLandmarks(const eaci::MapFrame& frame) {
+  const eaci::LandmarkCache* cache = workspace_->search.landmarkCache();
+  if (cache == nullptr) return;
+  const int in_use = cache->countInUse();
+  if (in_use < cache->count() && in_use != landmarks_reported_)
+    say(LogLevel::kWarn, std::to_string(cache->count()) + " landmarks do not fit on " + sizeOf(frame) + ": making " +
+                             std::to_string(in_use) + " (their tables are capped at " +
                              std::to_string(eaci::kMaxLandmarkBytes >> 20) + " MiB)");
-  landmarks_in_use_ = count;
-  workspace_->search.useLandmarks(count);
+  landmarks_reported_ = in_use;
+  const std::string error = cache->lastError();
+  if (!error.empty() && error != landmark_error_reported_)
+    say(LogLevel::kWarn, error + "; planning without landmarks until they are made");
+  landmark_error_reported_ = error;
 }
 
 std::vector<std::string> PlanningService::replayNotes(const std::string& note, const Configuration& config) const {

@@ -103,7 +103,11 @@ class PlanningService {
  private:
   PlanReply planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
                        const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason);
-  void useLandmarksFor(const CostmapSnapshot& costmap, int requested);
+  // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
+  void useLandmarksFor(const eaci::MapFrame& frame, int requested);
+  // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,
+  // each said once, as the landmark cache reports it.
+  void reportLandmarks(const eaci::MapFrame& frame);
   void say(LogLevel level, const std::string& line) const noexcept;
   std::vector<std::string> replayNotes(const std::string& note, const Configuration& config) const;
 
@@ -126,7 +130,8 @@ class PlanningService {
   std::optional<eaci::MapFrame> last_frame_;  // the plan's
   int moves_in_a_row_ = 0;                    // the plan's
   bool rolling_ = false;                      // the plan's
-  int landmarks_in_use_ = -1;                 // the plan's; -1 = not yet logged
+  int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)
+  std::string landmark_error_reported_;       // the plan's
 
   PlanCancellation cancellation_;
 

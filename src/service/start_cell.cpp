@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -30,26 +31,33 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
     return check;
   }
   // Dijkstra from the start over the band's cells (obstacles to the planner, but not lethal),
-  // each entered at its cost + 1, until the first free cell is taken.
-  const auto index = [&](eaci::Cell c) { return static_cast<std::size_t>(c.row) * width + c.col; };
-  std::vector<double> cost(static_cast<std::size_t>(width) * height, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> parent(cost.size(), std::numeric_limits<std::uint32_t>::max());
-  using Entry = std::pair<double, std::uint32_t>;
+  // each entered at its cost + 1, until the first free cell is taken. Labels only for the cells
+  // it reaches: its work and memory follow the band around the robot, not the map.
+  using Index = std::uint32_t;
+  const auto index = [&](eaci::Cell c) { return static_cast<Index>(static_cast<std::size_t>(c.row) * width + c.col); };
+  const auto cellOf = [&](Index i) { return eaci::Cell{static_cast<int>(i / width), static_cast<int>(i % width)}; };
+  struct Label {
+    double cost;
+    Index parent;
+  };
+  constexpr Index kNoParent = std::numeric_limits<Index>::max();
+  std::unordered_map<Index, Label> labels;
+  using Entry = std::pair<double, Index>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  cost[index(start)] = 0.0;
-  open.push({0.0, static_cast<std::uint32_t>(index(start))});
+  labels[index(start)] = {0.0, kNoParent};
+  open.push({0.0, index(start)});
   const int drow[4] = {-1, 1, 0, 0}, dcol[4] = {0, 0, -1, 1};
   std::size_t popped = 0;
-  std::uint32_t exit = std::numeric_limits<std::uint32_t>::max();
+  Index exit = kNoParent;
   while (!open.empty()) {
     const auto [here_cost, here] = open.top();
     open.pop();
-    if (here_cost > cost[here]) continue;
+    if (here_cost > labels[here].cost) continue;
     if (should_stop && ++popped % 4096 == 0 && should_stop()) {
       check.error = "stopped while looking for the way out of the inflated band around the start";
       return check;
     }
-    const eaci::Cell cell{static_cast<int>(here / width), static_cast<int>(here % width)};
+    const eaci::Cell cell = cellOf(here);
     if (!interpretation.isObstacle(value(cell))) {
       exit = here;
       break;
@@ -58,22 +66,20 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
       const eaci::Cell next{cell.row + drow[d], cell.col + dcol[d]};
       if (!contains(next) || value(next) == kCostmapLethal) continue;
       const double next_cost = here_cost + 1.0 + value(next);
-      const std::size_t j = index(next);
-      if (next_cost < cost[j]) {
-        cost[j] = next_cost;
-        parent[j] = here;
-        open.push({next_cost, static_cast<std::uint32_t>(j)});
-      }
+      const auto [label, added] = labels.try_emplace(index(next), Label{next_cost, here});
+      if (!added && next_cost >= label->second.cost) continue;
+      label->second = {next_cost, here};
+      open.push({next_cost, index(next)});
     }
   }
-  if (exit == std::numeric_limits<std::uint32_t>::max()) {
+  if (exit == kNoParent) {
     check.error = "the start is in the inflated band of an obstacle and no free cell can be reached from it";
     return check;
   }
   // lethal_cost - 1: the costliest cost a planner still crosses.
   const std::uint8_t passable = static_cast<std::uint8_t>(std::max(0, int(interpretation.lethal_cost) - 1));
-  for (std::uint32_t i = parent[exit]; i != std::numeric_limits<std::uint32_t>::max(); i = parent[i]) {
-    costmap.cells[costmap.bufferIndex({static_cast<int>(i / width), static_cast<int>(i % width)})] = passable;
+  for (Index i = labels[exit].parent; i != kNoParent; i = labels[i].parent) {
+    costmap.cells[costmap.bufferIndex(cellOf(i))] = passable;
     ++check.cells_opened;
   }
   check.ok = true;

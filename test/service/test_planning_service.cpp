@@ -412,6 +412,21 @@ TEST(PlanningService, ARollingWindowCostmapGetsNoLandmarks) {
   EXPECT_EQ(log.count("rolling window"), 1);
 }
 
+// Landmark tables are capped at 256 MiB (4 bytes a cell each): on 4100 x 4100 cells
+// (16,810,000) 4 landmarks would need 268.9 MB, so 3 are made (67,108,864 / 16,810,000 floats'
+// worth of tables = 3.99 -> 3), and that is said once however often the planner asks.
+TEST(PlanningService, LandmarksThatDoNotFitAreFewerAndSaidOnce) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.options.landmarks = 4;
+  config.options.max_planning_time = 0.02;  // the answer does not matter here, only the landmarks asked for
+  configure(service, config);
+  const CostmapSnapshot costmap = openCostmap(4100, 4100);
+  for (int k = 0; k < 2; ++k) (void)service.plan(costmap, request(costmap, {1, 1}, {4098, 4098}));
+  EXPECT_EQ(log.count("4 landmarks do not fit on 4100 x 4100 cells: making 3"), 1);
+}
+
 TEST(PlanningService, SavedCostmapsKeepTheNewestOnly) {
   const fs::path dir = fs::temp_directory_path() / ("eaci_service_replays_" + std::to_string(::getpid()));
   fs::remove_all(dir);

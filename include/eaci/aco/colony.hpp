@@ -185,7 +185,7 @@ class Colony {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
         // Walk into the worker's own route, then swap it into the ant's slot: neighbouring
         // slots belong to other workers, and writing them step by step would share cache lines.
-        walker.walk(setup_, rng, scratch, should_stop_ != nullptr ? &poll : nullptr);
+        walker.walk(setup_, rng, scratch, &poll);
         std::swap(scratch, routes_[static_cast<std::size_t>(k)]);
         if (poll.stopped()) {  // the iteration is dropped: leave the other ants unwalked
           walk_stopped_.store(true, std::memory_order_relaxed);

@@ -586,8 +586,8 @@ class GridSearchWorkspace {
     const double span = bounds.span;
     const StopPoll side_stop = stop != nullptr ? stop->forAnotherThread() : StopPoll{};
     detail::MeetingSide<Labels> sides[2] = {
-        {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true, side_stop.forAnotherThread()},
-        {backward_.of(generation_), &backward_open_, &touched_[1].cells, &bounds, false, side_stop.forAnotherThread()}};
+        {currentLabels(), &meeting_open_, &touched_[0].cells, &bounds, true, side_stop},
+        {backward_.of(generation_), &backward_open_, &touched_[1].cells, &bounds, false, side_stop}};
     for (int side = 0; side < 2; ++side) {
       const Cell end = side == 0 ? source : target;
       const auto slot = static_cast<std::uint32_t>(window_.slot(end));
