@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <exception>
 #include <new>
 #include <sstream>
 #include <utility>
@@ -159,11 +160,14 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
       }
       planning_ = true;
     }
-    struct Turn {  // gives the turn back however the plan ends
+    struct Turn {  // gives the turn back however the plan ends; a plan that threw leaves its
+                   // workspace suspect (its buffers may be half made) before the next plan can start
       PlanningService& service;
+      const int exceptions = std::uncaught_exceptions();
       ~Turn() {
         {
           std::lock_guard<std::mutex> lock(service.turn_mutex_);
+          if (std::uncaught_exceptions() > exceptions) service.workspace_suspect_ = true;
           service.planning_ = false;
         }
         service.turn_free_.notify_one();
@@ -172,13 +176,10 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
     const PlanCancellation::Scope in_progress(cancellation_);
     reply = planLocked(costmap, request, config, should_stop, stop_reason);
   } catch (const std::bad_alloc&) {
-    workspace_suspect_.store(true);
     fail("out of memory while planning (std::bad_alloc): no plan; the planner's buffers are made afresh for the next one");
   } catch (const std::exception& e) {
-    workspace_suspect_.store(true);
     fail(std::string("planning failed: ") + e.what());
   } catch (...) {
-    workspace_suspect_.store(true);
     fail("planning failed with an unknown exception");
   }
   return reply;
@@ -186,7 +187,8 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
 
 PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
                                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
-  if (workspace_suspect_.exchange(false) || !workspace_) {
+  if (workspace_suspect_ || !workspace_) {
+    workspace_suspect_ = false;
     workspace_.reset();
     workspace_ = std::make_unique<eaci::PlannerWorkspace>();
     landmarks_reported_ = -1;

@@ -125,7 +125,7 @@ class PlanningService {
   std::condition_variable turn_free_;
   bool planning_ = false;  // under turn_mutex_; the members below marked "the plan's" belong to the plan holding the turn
   std::unique_ptr<eaci::PlannerWorkspace> workspace_;  // the plan's
-  std::atomic<bool> workspace_suspect_{false};         // a plan threw: make the workspace afresh
+  bool workspace_suspect_ = false;  // under turn_mutex_ when set, the plan's when read: a plan threw, make it afresh
   // Rolling-window costmaps (local costmaps) move every update: landmarks would never hold.
   std::optional<eaci::MapFrame> last_frame_;  // the plan's
   int moves_in_a_row_ = 0;                    // the plan's
