@@ -29,6 +29,12 @@
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/parallel/worker_group.hpp"
 #include "eaci/search/bucket_queue.hpp"
@@ -271,6 +277,7 @@ class LandmarkCache {
   // The worker thread's body: catches everything (an exception leaving a thread would end the
   // process); a failure leaves the landmarks held as they were.
   void make(CostGrid floor, const std::shared_ptr<const Landmarks>& held, int count) {
+    yieldToPlans();
     std::shared_ptr<const Landmarks> made;
     std::string error;
     try {
@@ -285,6 +292,15 @@ class LandmarkCache {
     if (made) ready_ = std::move(made);
     last_error_ = error;
     computing_ = false;
+  }
+
+  // The landmarks are made beside the plans that need them now: on a machine with few cores
+  // their thread would take a core from a plan and push it past its time limit, so it runs at
+  // the lowest priority (Linux: a thread's own nice value; elsewhere as it is).
+  static void yieldToPlans() {
+#ifdef __linux__
+    setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
   }
 
   // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest).
