@@ -3,12 +3,16 @@
 # the core's, and ROS 1 Noetic from Debian's own packages for the ROS layer (skip those with
 # EACI_WITH_ROS=OFF). The navigation stack (nav_core, costmap_2d, move_base) is not packaged
 # in Debian: with it installed, the move_base plugin is built too.
-# Usage: scripts/install_deps.sh [extra-package ...]
+# Usage: scripts/install_deps.sh [--cli] [extra-package ...]
+#   --cli  only what the command-line planner (eaci_plan) builds with: no test or benchmark
+#          libraries, no ROS (scripts/demo.sh)
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libstb-dev
-          libgtest-dev libbenchmark-dev)
-if [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
+cli_only=false
+if [ "${1:-}" = "--cli" ]; then cli_only=true; shift; fi
+packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libstb-dev)
+$cli_only || packages+=(libgtest-dev libbenchmark-dev)
+if ! $cli_only && [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs
              libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev
              rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools

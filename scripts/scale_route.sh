@@ -57,7 +57,7 @@ plan() {  # MAP GOAL ALGORITHM [--set ...]
   local ms length kb
   if /usr/bin/time -f "%M" -o "$OUT/time.txt" "$BIN/eaci_plan" --map "$map" --start 1,1 --goal "$goal" \
     --algorithm "$algorithm" "$@" >"$OUT/plan.txt" 2>&1; then
-    length=$(awk '/^length:/ { print $2 }' "$OUT/plan.txt")
+    length=$(awk '/^grid route:/ { print $4 }' "$OUT/plan.txt")
   else
     length=nan  # no route (exit 3)
   fi

@@ -16,9 +16,11 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>  // header-only
+#include <stb_image.h>          // implementation in the linked libstb
 
 #include "eaci/aco/parameters.hpp"
 #include "eaci/io/map_io.hpp"
+#include "../src/tools/plan_image.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -426,6 +428,41 @@ TEST_F(CliTest, PngIsWritten) {
   EXPECT_TRUE(fs::exists(tmp("astar.png")));
   expectBadInput("--map " + quote(map) + " --start 0,0 --goal 39,39 --set allow_corner_cutting=true "
                  "--algorithm astar --png " + quote((dir_ / "no-such-dir" / "x.png").string()));
+}
+
+// The summary names both routes and the picture draws the smoothed one. On a free 3 x 10 map
+// A*'s route from (0, 0) to (2, 9) takes 7 straight and 2 diagonal steps (7 + 2 sqrt 2 =
+// 9.8284 cells); smoothed, it is one straight segment of sqrt(2^2 + 9^2) = 9.2195 cells that
+// turns nowhere.
+TEST_F(CliTest, SummaryAndPictureShowTheGridAndTheSmoothedRoute) {
+  writeFile(tmp("free.txt"), "0 0 0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 0 0\n");
+  const std::string common = "--map " + quote(tmp("free.txt").string()) + " --start 0,0 --goal 2,9 --algorithm astar";
+  const CliRun smoothed = run(common + " --set smooth_path=true --png " + quote(tmp("smoothed.png").string()));
+  ASSERT_EQ(smoothed.exit_code, 0) << smoothed.err;
+  EXPECT_NE(smoothed.out.find("grid route:     length 9.8284 cells = 9.8284 m, total turn "), std::string::npos)
+      << smoothed.out;
+  EXPECT_NE(smoothed.out.find("smoothed route: length 9.2195 cells = 9.2195 m, total turn 0 deg (2 corners"),
+            std::string::npos)
+      << smoothed.out;
+  const CliRun plain = run(common + " --png " + quote(tmp("plain.png").string()));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("grid route:     length 9.8284 cells"), std::string::npos) << plain.out;
+  EXPECT_NE(plain.out.find("smoothed route: off"), std::string::npos) << plain.out;
+
+  // The smoothed route's colour is in the smoothed picture only.
+  auto smoothed_pixels = [](const fs::path& png) {
+    const auto colour = eaci::tools::kSmoothedRouteColour;
+    int w = 0, h = 0, channels = 0;
+    unsigned char* rgb = stbi_load(png.c_str(), &w, &h, &channels, 3);
+    if (rgb == nullptr) return -1;
+    int n = 0;
+    for (int i = 0; i < w * h; ++i)
+      n += rgb[3 * i] == colour[0] && rgb[3 * i + 1] == colour[1] && rgb[3 * i + 2] == colour[2] ? 1 : 0;
+    stbi_image_free(rgb);
+    return n;
+  };
+  EXPECT_GT(smoothed_pixels(tmp("smoothed.png")), 9 * 24);  // at least a pixel row along 9 cells of 24 px
+  EXPECT_EQ(smoothed_pixels(tmp("plain.png")), 0);
 }
 
 TEST_F(CliTest, JsonHasClearanceAndMeanCellCost) {

@@ -33,6 +33,7 @@
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/io/parameter_file.hpp"
 #include "eaci/io/text.hpp"
+#include "eaci/metrics/path_metrics.hpp"
 #include "eaci/planner.hpp"
 #include "plan_image.hpp"
 #include "plan_json.hpp"
@@ -209,15 +210,14 @@ std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanConte
   std::ostringstream s;
   s << (r.algorithm == eaci::Algorithm::kAStar ? std::string("A*") : upper(eaci::toString(r.algorithm))) << " on " << baseName(context.map_path);
   if (r.success()) {
-    s << ": length " << formatNumber(r.length, 2) << " cells";
-    if (context.map && context.map->resolution != 1.0)
-      s << " (" << formatNumber(r.length * context.map->resolution, 2) << " m)";
-    s << ", turn " << formatNumber(r.total_turn_deg, 0) << " deg";
+    s << ", seed " << context.parameters.seed;
     if (r.algorithm != eaci::Algorithm::kAStar)
-      s << "\nconverged at iteration " << r.iterations_to_converge << " of " << r.iterations_run << ", "
+      s << ": converged at iteration " << r.iterations_to_converge << " of " << r.iterations_run << ", "
         << r.lost_ants_total << " lost ants";
     if (r.islands.size() > 2) s << ", " << r.islands.size() - 2 << " islands";
-    s << ", seed " << context.parameters.seed;
+    for (const std::string& line :
+         eaci::tools::routeCaptionLines(r, context.map ? context.map->resolution : 1.0, context.parameters.smooth_path))
+      s << "\n" << line;
   } else {
     s << ": " << errorLine(r.error);
   }
@@ -256,7 +256,8 @@ Outputs writeOutputs(const Options& o, const eaci::PlanResult& r, const eaci::to
         drawing.auxiliary_blocked = auxiliaryBlocked(*context.map, params, *context.start, *context.goal);
       drawing.caption = imageCaption(r, context);
       drawing.planned_on = context.planned_on;
-      eaci::tools::writePng(o.png_file, eaci::tools::renderPlan(drawing));
+      drawing.smoothed = params.smooth_path;
+      eaci::tools::writePng(o.png_file, eaci::tools::renderPlan(drawing).image);
     } catch (const std::exception& e) {
       out.png_error = e.what();
     }
@@ -268,34 +269,41 @@ Outputs writeOutputs(const Options& o, const eaci::PlanResult& r, const eaci::to
 
 void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools::PlanContext& context) {
   const eaci::OccupancyMap& map = *context.map;
+  const double res = map.resolution;
   std::ostringstream s;
-  s << "algorithm:  " << eaci::toString(r.algorithm) << "\n";
-  s << "map:        " << context.map_path << " (" << map.width << " x " << map.height << " cells, "
-    << formatNumber(map.resolution) << " m/cell, "
+  s << "algorithm:      " << eaci::toString(r.algorithm) << "\n";
+  s << "map:            " << context.map_path << " (" << map.width << " x " << map.height << " cells, "
+    << formatNumber(res) << " m/cell, "
     << (map.values == eaci::CellValues::kCostmapCosts
             ? "costmap costs, obstacles from " + std::to_string(context.parameters.lethal_cost) + ", "
             : std::string())
     << "unknown cells as " << context.unknown_policy << ")\n";
-  s << "start:      " << describeCell(map, *context.start) << "\n";
-  s << "goal:       " << describeCell(map, *context.goal);
+  s << "start:          " << describeCell(map, *context.start) << "\n";
+  s << "goal:           " << describeCell(map, *context.goal);
   if (context.requested_goal) s << " (moved from " << describeCell(map, *context.requested_goal) << " by --tolerance)";
   s << "\n";
-  s << "length:     " << formatNumber(r.length) << " cells = " << formatNumber(r.length * map.resolution) << " m ("
-    << r.path.size() << " cells on the path)\n";
-  s << "turn:       " << formatNumber(r.total_turn_deg, 1) << " deg in total\n";
+  // The route the search found, cell to neighbouring cell, and the one a robot drives.
+  s << "grid route:     length " << formatNumber(r.length) << " cells = " << formatNumber(r.length * res)
+    << " m, total turn " << formatNumber(r.total_turn_deg, 1) << " deg (" << r.path.size() << " cells, 8-connected)\n";
+  if (context.parameters.smooth_path)
+    s << "smoothed route: length " << formatNumber(r.smoothed_length) << " cells = " << formatNumber(r.smoothed_length * res)
+      << " m, total turn " << formatNumber(eaci::totalTurnDegrees(r.smoothed_path), 1) << " deg ("
+      << r.smoothed_path.size() << " corners joined by straight lines: what a robot drives)\n";
+  else
+    s << "smoothed route: off (--set smooth_path=true smooths the grid route into one a robot drives)\n";
   if (r.algorithm != eaci::Algorithm::kAStar) {
-    s << "iterations: converged at " << r.iterations_to_converge << " of " << r.iterations_run << " run";
+    s << "iterations:     converged at " << r.iterations_to_converge << " of " << r.iterations_run << " run";
     if (r.stopped_early) s << " (stopped early)";
     if (r.interrupted) s << (r.route_from_search ? " (interrupted before any ant arrived: A*'s route)" : " (interrupted)");
     s << "\n";
-    s << "lost ants:  " << r.lost_ants_total << " in total\n";
+    s << "lost ants:      " << r.lost_ants_total << " in total\n";
   }
   const std::size_t inner = r.islands.size() >= 2 ? r.islands.size() - 2 : 0;
-  s << "islands:    " << inner << " between start and goal (" << r.islands.size() << " waypoints)\n";
-  s << "seed:       " << context.parameters.seed << "\n";
-  s << "time:       " << formatNumber(context.time_ms.value_or(0.0), context.time_ms.value_or(0.0) < 10 ? 3 : 1) << " ms\n";
-  if (!o.json_file.empty()) s << "json:       " << o.json_file << "\n";
-  if (!o.png_file.empty()) s << "png:        " << o.png_file << "\n";
+  s << "islands:        " << inner << " between start and goal (" << r.islands.size() << " waypoints)\n";
+  s << "seed:           " << context.parameters.seed << "\n";
+  s << "time:           " << formatNumber(context.time_ms.value_or(0.0), context.time_ms.value_or(0.0) < 10 ? 3 : 1) << " ms\n";
+  if (!o.json_file.empty()) s << "json:           " << o.json_file << "\n";
+  if (!o.png_file.empty()) s << "png:            " << o.png_file << "\n";
   std::cout << s.str() << std::flush;
 }
 

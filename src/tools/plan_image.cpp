@@ -8,6 +8,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include "eaci/io/text.hpp"
+#include "eaci/metrics/path_metrics.hpp"
+
 #include <stb_image_write.h>  // implementation in the linked libstb
 
 #pragma GCC diagnostic push
@@ -29,7 +32,8 @@ constexpr Rgb kObstacleColour{0, 0, 0};
 constexpr Rgb kUnknownColour{150, 128, 178};       // unknown, planned as obstacle (violet: off the cost ramp)
 constexpr Rgb kUnknownFreeColour{222, 208, 238};   // unknown, planned as free
 constexpr Rgb kAuxiliaryColour{166, 186, 210};     // light blue-grey
-constexpr Rgb kPathColour{20, 80, 235};
+constexpr Rgb kGridRoute{kGridRouteColour[0], kGridRouteColour[1], kGridRouteColour[2]};
+constexpr Rgb kSmoothedRoute{kSmoothedRouteColour[0], kSmoothedRouteColour[1], kSmoothedRouteColour[2]};
 constexpr Rgb kHaloColour{255, 255, 255};
 constexpr Rgb kIslandColour{255, 140, 0};
 constexpr Rgb kIslandEdge{105, 50, 0};
@@ -229,6 +233,7 @@ struct LegendItem {
   Swatch swatch;
   Rgb colour;
   std::string label;
+  double line_width = 3;  // kLine: in text-scale units
 };
 
 struct LegendLayout {
@@ -237,12 +242,23 @@ struct LegendLayout {
 
 }  // namespace
 
+std::vector<std::string> routeCaptionLines(const PlanResult& r, double resolution, bool smoothed) {
+  auto describe = [resolution](const std::string& name, double length, double turn) {
+    std::string line = name + ": " + formatNumber(length, 2) + " cells";
+    if (resolution != 1.0) line += " = " + formatNumber(length * resolution, 2) + " m";
+    return line + ", total turn " + formatNumber(turn, 0) + " deg";
+  };
+  if (!smoothed) return {describe("route", r.length, r.total_turn_deg)};
+  return {describe("grid route (8-connected)", r.length, r.total_turn_deg),
+          describe("smoothed route (driven)", r.smoothed_length, totalTurnDegrees(r.smoothed_path))};
+}
+
 int cellPixels(int width, int height) {
   const int longest = std::max({width, height, 1});
   return std::clamp(1000 / longest, 1, 24);
 }
 
-RgbImage renderPlan(const PlanDrawing& d) {
+PlanImage renderPlan(const PlanDrawing& d) {
   if (d.map == nullptr || d.map->width <= 0 || d.map->height <= 0 ||
       d.map->cells.size() != static_cast<std::size_t>(d.map->width) * static_cast<std::size_t>(d.map->height))
     throw std::invalid_argument("renderPlan: no map to draw");
@@ -298,6 +314,7 @@ RgbImage renderPlan(const PlanDrawing& d) {
   }
   std::vector<LegendItem> items = {{Swatch::kDisc, kStartColour, "start"}, {Swatch::kDisc, kGoalColour, "goal"}};
   const bool has_path = result && !result->path.empty();
+  const bool has_smoothed = has_path && d.smoothed && !result->smoothed_path.empty();
   const bool has_islands = result && result->islands.size() > 2;
   auto centre = [k](Cell c) { return std::pair<double, double>{(c.col + 0.5) * k, (c.row + 0.5) * k}; };
   auto on_map = [&](Cell c) { return c.row >= 0 && c.col >= 0 && c.row < map.height && c.col < map.width; };
@@ -321,22 +338,28 @@ RgbImage renderPlan(const PlanDrawing& d) {
     for (std::size_t kept : thinMarkers(centres, small_cells ? 8.0 * island_r : 0.0)) islands_drawn.push_back(index[kept]);
   }
   const std::size_t island_count = has_islands ? result->islands.size() - 2 : 0;
-  if (has_path) items.push_back({Swatch::kLine, kPathColour, "path"});
+  if (has_smoothed) {
+    items.push_back({Swatch::kLine, kGridRoute, "grid route (8-connected)", 6});
+    items.push_back({Swatch::kLine, kSmoothedRoute, "smoothed route (what a robot drives)"});
+  } else if (has_path) {
+    items.push_back({Swatch::kLine, kGridRoute, "route"});
+  }
   if (has_islands)
     items.push_back({Swatch::kDisc, kIslandColour,
                      islands_drawn.size() < island_count
                          ? "island (order; " + std::to_string(islands_drawn.size()) + " of " +
                                std::to_string(island_count) + " drawn)"
                          : std::string("island (order)")});
-  if (!heat.empty()) items.push_back({Swatch::kGradient, kPathColour, "pheromone (log)"});
-  if (has_aux) items.push_back({Swatch::kSquare, kAuxiliaryColour, "auxiliary-map obstacle"});
-  if (has_cost) items.push_back({Swatch::kCostRamp, kFreeColour, "cost 0..254"});
+  if (!heat.empty()) items.push_back({Swatch::kGradient, kGridRoute, "pheromone (log scale)"});
+  if (has_aux) items.push_back({Swatch::kSquare, kAuxiliaryColour, "corner closed (auxiliary map)"});
+  if (has_cost) items.push_back({Swatch::kCostRamp, kFreeColour, "cell cost 0..254"});
   items.push_back({Swatch::kSquare, kObstacleColour, "obstacle"});
   if (has_unknown)
     items.push_back({Swatch::kSquare, d.unknown == UnknownPolicy::kFree ? kUnknownFreeColour : kUnknownColour,
                      d.unknown == UnknownPolicy::kFree ? "unknown (as free)" : "unknown"});
   auto swatch_width = [&](const LegendItem& item) {
-    return (item.swatch == Swatch::kGradient || item.swatch == Swatch::kCostRamp ? 36 : 12) * ts;
+    return (item.swatch == Swatch::kGradient || item.swatch == Swatch::kCostRamp ? 36 : item.swatch == Swatch::kLine ? 20 : 12) *
+           ts;
   };
   auto item_width = [&](const LegendItem& item) {
     return swatch_width(item) + 4 * ts + textWidth(item.label, ts) + 10 * ts;
@@ -399,13 +422,25 @@ RgbImage renderPlan(const PlanDrawing& d) {
     }
   };
   if (small_cells) draw_islands();
-  if (has_path) {
+  // A route: its line on a white halo that keeps it apart from the pheromone beneath.
+  auto draw_route = [&](const CellPath& route, double width, double halo, Rgb colour) {
     std::vector<std::pair<double, double>> points;
-    for (const Cell& c : result->path) points.push_back(centre(c));
-    canvas.strokePolyline(points, path_w + std::max(2.0, small_cells ? path_w * 0.6 : 0.16 * k), kHaloColour);
-    canvas.strokePolyline(points, path_w, kPathColour);
+    for (const Cell& c : route) points.push_back(centre(c));
+    if (halo > 0) canvas.strokePolyline(points, width + halo, kHaloColour);
+    canvas.strokePolyline(points, width, colour);
+  };
+  const double halo = std::max(2.0, small_cells ? path_w * 0.6 : 0.16 * k);
+  // With a smoothed route the grid route is a wide line and the smoothed route a narrow one
+  // on top of it: where the two coincide the smoothed route runs inside the grid route's band,
+  // where they part both show.
+  if (has_smoothed) {
+    draw_route(result->path, 2.3 * path_w, halo, kGridRoute);
+    if (!small_cells) draw_islands();
+    draw_route(result->smoothed_path, std::max(2.5, 0.9 * path_w), 1.0, kSmoothedRoute);
+  } else {
+    if (has_path) draw_route(result->path, path_w, halo, kGridRoute);
+    if (!small_cells) draw_islands();
   }
-  if (!small_cells) draw_islands();
   if (d.start && on_map(*d.start)) {
     const auto [x, y] = centre(*d.start);
     drawMarker(canvas, x, y, marker_r, kStartColour, kMarkerEdge, true, "S", kHaloColour);
@@ -437,9 +472,11 @@ RgbImage renderPlan(const PlanDrawing& d) {
           canvas.fillRect(x, mid - sw / 2, x + sw, mid + sw / 2, kMarkerEdge);
           canvas.fillRect(x + 1, mid - sw / 2 + 1, x + sw - 1, mid + sw / 2 - 1, item.colour);
           break;
-        case Swatch::kLine:
-          canvas.strokePolyline({{x + 1.0, mid + 0.0}, {x + sw - 1.0, mid + 0.0}}, 3.0 * ts, item.colour);
+        case Swatch::kLine: {  // round caps: the ends stay inside the swatch
+          const double half = item.line_width * ts / 2.0;
+          canvas.strokePolyline({{x + half, mid + 0.0}, {x + sw - half, mid + 0.0}}, item.line_width * ts, item.colour);
           break;
+        }
         case Swatch::kGradient:
           for (int g = 0; g < sw; ++g)
             canvas.fillRect(x + g, mid - 4 * ts, x + g + 1, mid + 4 * ts, heatColour(0.15 + 0.85 * g / (sw - 1.0)));
@@ -457,7 +494,7 @@ RgbImage renderPlan(const PlanDrawing& d) {
     }
     y += line_h;
   }
-  return std::move(canvas).release();
+  return PlanImage{std::move(canvas).release(), margin, margin, k};
 }
 
 void writePng(const std::string& file, const RgbImage& image) {
