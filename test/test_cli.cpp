@@ -245,8 +245,9 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
   ASSERT_LE(converged, 20);
   const json& best_so_far = j["best_length_so_far"];
   EXPECT_NEAR(best_so_far[converged - 1].get<double>(), j["length"].get<double>(), 1e-9);
-  if (converged > 1 && !best_so_far[converged - 2].is_null())  // null: no route yet
+  if (converged > 1 && !best_so_far[converged - 2].is_null()) {  // null: no route yet
     EXPECT_GT(best_so_far[converged - 2].get<double>(), j["length"].get<double>() + 1e-9);
+  }
   EXPECT_NEAR(j["best_length_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);
   for (const auto& v : j["best_length_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
   ASSERT_GE(j["islands"].size(), 2u);
