@@ -38,38 +38,19 @@ struct ByteMap {
   }
 };
 
-// Weighted Dijkstra from first principles: bytes >= 253 are walls, a move enters a cell of byte
-// c for step x (50 + 3 c) / 50, a diagonal needs both side cells open unless corners may be cut.
+// The suite's reference Dijkstra (test_support.hpp) on the bytes themselves: bytes >= 253 are
+// walls, a move into a cell of byte c costs its length x (neutral + factor c) / neutral.
 double referenceCost(const ByteMap& map, Cell start, Cell goal, bool cutting, double neutral = 50.0,
                      double factor = 3.0) {
-  const auto open = [&](int r, int c) { return r >= 0 && c >= 0 && r < map.height && c < map.width && map.at(r, c) < 253; };
-  std::vector<double> best(map.bytes.size(), std::numeric_limits<double>::infinity());
-  std::set<std::pair<double, int>> queue;
-  const int s = start.row * map.width + start.col;
-  best[static_cast<std::size_t>(s)] = 0.0;
-  queue.insert({0.0, s});
-  while (!queue.empty()) {
-    const auto [cost, here] = *queue.begin();
-    queue.erase(queue.begin());
-    const int r = here / map.width, c = here % map.width;
-    if (r == goal.row && c == goal.col) return cost;
-    for (int dr = -1; dr <= 1; ++dr) {
-      for (int dc = -1; dc <= 1; ++dc) {
-        if ((dr == 0 && dc == 0) || !open(r + dr, c + dc)) continue;
-        const bool diagonal = dr != 0 && dc != 0;
-        if (diagonal && !cutting && !(open(r + dr, c) && open(r, c + dc))) continue;
-        const double step = diagonal ? std::sqrt(2.0) : 1.0;
-        const double next_cost = cost + step * (neutral + factor * map.at(r + dr, c + dc)) / neutral;
-        const int next = (r + dr) * map.width + (c + dc);
-        if (next_cost < best[static_cast<std::size_t>(next)]) {
-          queue.erase({best[static_cast<std::size_t>(next)], next});
-          best[static_cast<std::size_t>(next)] = next_cost;
-          queue.insert({next_cost, next});
-        }
-      }
-    }
-  }
-  return std::numeric_limits<double>::infinity();
+  eaci::test::ReferenceGrid g;
+  g.width = map.width;
+  g.height = map.height;
+  g.open = [&map](int r, int c) { return map.at(r, c) < 253; };
+  g.cost = [&map](int r, int c) { return static_cast<int>(map.at(r, c)); };
+  g.corner_cutting = cutting;
+  g.neutral_cost = neutral;
+  g.cost_factor = factor;
+  return eaci::test::referenceCosts(g, start)[static_cast<std::size_t>(goal.row) * map.width + goal.col];
 }
 
 // Random walls and random costs 0..252 in the open cells (no structure: every move differs).

@@ -1,11 +1,13 @@
 // The differential-drive kinematics (paper Eq. 5-7, REP 103 signs), exact pose
 // integration, wheel limits, and the simulated wheel encoders with their odometry.
+// Every expectation is a number worked out by hand from the closed-form kinematics of the
+// paper's robot (track B = 0.175 m, wheel radius 0.0325 m), written out, never recomputed
+// with the functions under test.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iostream>
 #include <limits>
 #include <string>
 
@@ -32,11 +34,11 @@ TEST(DiffDrive, StraightMotionHasEqualWheelSpeeds) {
 }
 
 TEST(DiffDrive, TurningInPlaceCounterClockwise) {
-  const double b = 0.175;
-  const WheelSpeeds w = wheelSpeeds(0.0, 1.0, b);  // omega > 0: left turn (REP 103)
-  EXPECT_DOUBLE_EQ(w.left, -b / 2);
-  EXPECT_DOUBLE_EQ(w.right, b / 2);
-  EXPECT_DOUBLE_EQ(turningRadius(w.left, w.right, b), 0.0);
+  // omega B / 2 = 1 x 0.175 / 2 = 0.0875 m/s: the wheels turn the opposite ways (v_L = -v_R).
+  const WheelSpeeds w = wheelSpeeds(0.0, 1.0, 0.175);  // omega > 0: left turn (REP 103)
+  EXPECT_DOUBLE_EQ(w.left, -0.0875);
+  EXPECT_DOUBLE_EQ(w.right, 0.0875);
+  EXPECT_DOUBLE_EQ(turningRadius(-0.0875, 0.0875, 0.175), 0.0);
 }
 
 TEST(DiffDrive, TurningRadiusEq7) {
@@ -54,18 +56,21 @@ TEST(DiffDrive, SignConventionAgainstThePaper) {
   EXPECT_NEAR(t.omega, -1.0, 1e-15);
 }
 
-TEST(DiffDrive, WheelSpeedsAndTwistAreInverse) {
-  const double b = 0.175;
-  const WheelSpeeds cases[] = {{0.1, 0.3}, {-0.2, 0.4}, {0.5, 0.5}, {-0.1, -0.3}, {0.0, 0.0}};
-  for (const WheelSpeeds& w : cases) {
-    const BodyTwist t = bodyTwist(w, b);
-    const WheelSpeeds back = wheelSpeeds(t.v, t.omega, b);
-    EXPECT_NEAR(back.left, w.left, 1e-15);
-    EXPECT_NEAR(back.right, w.right, 1e-15);
-  }
-  // v = (0.1 + 0.3)/2 = 0.2, omega = (0.3 - 0.1)/0.2 = 1, so v/omega is the Eq. 7 radius 0.2.
-  const BodyTwist t = bodyTwist({0.1, 0.3}, 0.2);
-  EXPECT_NEAR(t.v / t.omega, turningRadius(0.1, 0.3, 0.2), 1e-15);
+TEST(DiffDrive, WheelSpeedsOfAnArcOnThePapersRobot) {
+  // v = 0.3 m/s, omega = 0.5 rad/s on B = 0.175 m: omega B / 2 = 0.04375, so
+  // v_L = 0.3 - 0.04375 = 0.25625 and v_R = 0.3 + 0.04375 = 0.34375 m/s; the radius
+  // v / omega = 0.6 m, and Eq. 7 gives 0.175 x 0.6 / (2 x 0.0875) = 0.6 m too.
+  const WheelSpeeds w = wheelSpeeds(0.3, 0.5, 0.175);
+  EXPECT_NEAR(w.left, 0.25625, 1e-15);
+  EXPECT_NEAR(w.right, 0.34375, 1e-15);
+  const BodyTwist t = bodyTwist({0.25625, 0.34375}, 0.175);
+  EXPECT_NEAR(t.v, 0.3, 1e-15);
+  EXPECT_NEAR(t.omega, 0.5, 1e-14);
+  EXPECT_NEAR(turningRadius(0.25625, 0.34375, 0.175), 0.6, 1e-14);
+  // Backwards on the same arc: both wheels negated, v = -0.3, omega = -0.5.
+  const BodyTwist back = bodyTwist({-0.25625, -0.34375}, 0.175);
+  EXPECT_NEAR(back.v, -0.3, 1e-15);
+  EXPECT_NEAR(back.omega, -0.5, 1e-14);
 }
 
 TEST(DiffDrive, IntegratesAQuarterCircleExactly) {
@@ -81,16 +86,43 @@ TEST(DiffDrive, IntegratesAQuarterCircleExactly) {
   EXPECT_NEAR(cw.orientation.angle(), -kPiTest / 2, 1e-12);
 }
 
-TEST(DiffDrive, ManySmallStepsEqualOneBigStep) {
+TEST(DiffDrive, ACircleOfRadiusVOverOmegaClosesAfterTwoPiOverOmega) {
+  // v = 0.3 m/s, omega = 0.5 rad/s from (0, 0) facing +x: a circle of radius 0.6 m about
+  // (0, 0.6). After pi s (a quarter) at (0.6, 0.6) facing +y, after 2 pi s at (0, 1.2) facing
+  // -x, after 2 pi / omega = 4 pi s back at the start; in one step or in 1000 small ones.
+  const Pose2 quarter = integrate(poseAt(0.0, 0.0, 0.0), 0.3, 0.5, kPiTest);
+  EXPECT_NEAR(quarter.position.x(), 0.6, 1e-12);
+  EXPECT_NEAR(quarter.position.y(), 0.6, 1e-12);
+  EXPECT_NEAR(quarter.orientation.angle(), kPiTest / 2, 1e-12);
+  const Pose2 half = integrate(poseAt(0.0, 0.0, 0.0), 0.3, 0.5, 2 * kPiTest);
+  EXPECT_NEAR(half.position.x(), 0.0, 1e-12);
+  EXPECT_NEAR(half.position.y(), 1.2, 1e-12);
+  EXPECT_NEAR(std::abs(half.orientation.angle()), kPiTest, 1e-12);
+  Pose2 pose = poseAt(0.0, 0.0, 0.0);
+  for (int k = 0; k < 1000; ++k) pose = integrate(pose, 0.3, 0.5, 4 * kPiTest / 1000);
+  EXPECT_NEAR(pose.position.x(), 0.0, 1e-9);
+  EXPECT_NEAR(pose.position.y(), 0.0, 1e-9);
+  EXPECT_NEAR(std::sin(pose.orientation.angle()), 0.0, 1e-9);
+  EXPECT_GT(std::cos(pose.orientation.angle()), 0.0);
+}
+
+TEST(DiffDrive, SmallStepsFollowTheCircleFromAnyPose) {
+  // From (0.3, -0.2) at yaw 0.5 with v = 0.4, omega = 0.8: radius 0.5 about
+  // (0.3 - 0.5 sin 0.5, -0.2 + 0.5 cos 0.5) = (0.0602872, 0.2387913); after 3 s the yaw is
+  // 0.5 + 2.4 = 2.9 and the robot at (0.0602872 + 0.5 sin 2.9, 0.2387913 - 0.5 cos 2.9)
+  // = (0.1799119, 0.7242704).
   Pose2 pose = poseAt(0.3, -0.2, 0.5);
   for (int k = 0; k < 100; ++k) pose = integrate(pose, 0.4, 0.8, 0.03);
-  const Pose2 once = integrate(poseAt(0.3, -0.2, 0.5), 0.4, 0.8, 3.0);
-  EXPECT_NEAR(pose.position.x(), once.position.x(), 1e-12);
-  EXPECT_NEAR(pose.position.y(), once.position.y(), 1e-12);
-  EXPECT_NEAR(pose.orientation.angle(), once.orientation.angle(), 1e-12);
+  EXPECT_NEAR(pose.position.x(), 0.1799119, 1e-7);
+  EXPECT_NEAR(pose.position.y(), 0.7242704, 1e-7);
+  EXPECT_NEAR(pose.orientation.angle(), 2.9, 1e-12);
 }
 
 TEST(DiffDrive, IntegratesAStraightLine) {
+  // 0.2 m/s for 5 s along +x: 1 m.
+  const Pose2 along_x = integrate(poseAt(0.0, 0.0, 0.0), 0.2, 0.0, 5.0);
+  EXPECT_NEAR(along_x.position.x(), 1.0, 1e-15);
+  EXPECT_NEAR(along_x.position.y(), 0.0, 1e-15);
   const Pose2 end = integrate(poseAt(1.0, 2.0, kPiTest / 4), 0.5, 0.0, 2.0);  // 1 m at 45 degrees
   EXPECT_NEAR(end.position.x(), 1.0 + std::sqrt(0.5), 1e-12);
   EXPECT_NEAR(end.position.y(), 2.0 + std::sqrt(0.5), 1e-12);
@@ -113,8 +145,9 @@ TEST(DiffDrive, SaturationKeepsTheTurningRadius) {
   const WheelSpeeds w = saturateWheelSpeeds({0.2, 1.0}, 0.5);  // factor 0.5
   EXPECT_DOUBLE_EQ(w.left, 0.1);
   EXPECT_DOUBLE_EQ(w.right, 0.5);
-  EXPECT_NEAR(turningRadius(w.left, w.right, b), turningRadius(0.2, 1.0, b), 1e-15);  // 0.75 B
-  EXPECT_NEAR(turningRadius(w.left, w.right, b), 0.75 * b, 1e-15);
+  // Eq. 7 before and after: 0.175 x 1.2 / (2 x 0.8) = 0.175 x 0.6 / (2 x 0.4) = 0.13125 m.
+  EXPECT_NEAR(turningRadius(0.2, 1.0, b), 0.13125, 1e-15);
+  EXPECT_NEAR(turningRadius(w.left, w.right, b), 0.13125, 1e-15);
   const WheelSpeeds slow = saturateWheelSpeeds({-0.3, 0.4}, 0.5);
   EXPECT_DOUBLE_EQ(slow.left, -0.3);
   EXPECT_DOUBLE_EQ(slow.right, 0.4);
@@ -146,8 +179,8 @@ TEST(DiffDrive, SimulatedRobotAppliesLimitsAndCountsWheelRotation) {
   const BodyTwist executed = robot.step(1.0, 0.0, 0.1);  // asks 1 m/s, wheels give 0.5
   EXPECT_DOUBLE_EQ(executed.v, 0.5);
   EXPECT_NEAR(robot.pose().position.x(), 0.05, 1e-15);
-  EXPECT_NEAR(robot.leftWheelAngle(), 0.05 / 0.0325, 1e-12);
-  EXPECT_NEAR(robot.rightWheelAngle(), 0.05 / 0.0325, 1e-12);
+  EXPECT_NEAR(robot.leftWheelAngle(), 1.5384615, 1e-7);  // 0.05 m on a 0.0325 m wheel, rad
+  EXPECT_NEAR(robot.rightWheelAngle(), 1.5384615, 1e-7);
 
   DiffDriveRobot gentle;  // default 2 m/s^2: after one 20 ms step at most 0.04 m/s
   EXPECT_NEAR(gentle.step(0.3, 0.0, 0.02).v, 0.04, 1e-15);
@@ -250,19 +283,16 @@ TEST(WheelEncoders, NoiseFreeOdometryOfASquareMatchesTheTruth) {
   EXPECT_NEAR(run.truth.position.x(), 0.0, 1e-9);
   EXPECT_NEAR(run.truth.position.y(), 0.0, 1e-9);
   EXPECT_NEAR(run.truth.orientation.angle(), 0.0, 1e-9);
-  // One tick rolls delta = 2 pi r / 1560 = 0.1309 mm. Counts are the floors of the exact
-  // tick positions, so each wheel's distance is off by < delta at all times, the yaw
-  // (d_R - d_L)/B by < 2 delta / B = 1.50 mrad, and the position by at most
-  // path length x 2 delta / B + (1 + total turn) delta = 4 x 1.50 mm + (1 + 2 pi) 0.13 mm = 6.9 mm.
-  const double delta = 2 * kPiTest * 0.0325 / 1560;
-  const double yaw_bound = 2 * delta / 0.175;
-  const double position_bound = 4.0 * yaw_bound + (1 + 2 * kPiTest) * delta;
-  EXPECT_NEAR(position_bound, 0.0069, 0.0001);
-  EXPECT_LT(run.max_error, position_bound);
-  EXPECT_LT(distanceBetween(run.odometry, run.truth), position_bound);
-  EXPECT_LT(std::abs(normalizeAngle(run.odometry.orientation.angle() - run.truth.orientation.angle())), yaw_bound);
-  std::cout << "[ measured ] noise-free square: max odometry error " << run.max_error * 1000 << " mm (bound "
-            << position_bound * 1000 << " mm)\n";
+  // One tick rolls delta = 2 pi r / 1560 = 2 pi 0.0325 / 1560 = 0.1309 mm. Counts are the
+  // floors of the exact tick positions, so each wheel's distance is off by < delta at all
+  // times, the yaw (d_R - d_L)/B by < 2 delta / B = 0.2618 / 175 = 1.496 mrad, and the
+  // position by at most path length x 2 delta / B + (1 + total turn) delta
+  // = 4 m x 1.496 mrad + (1 + 2 pi) x 0.1309 mm = 5.984 + 0.953 = 6.94 mm.
+  constexpr double kYawBound = 0.001496;     // rad
+  constexpr double kPositionBound = 0.00694;  // m
+  EXPECT_LT(run.max_error, kPositionBound);
+  EXPECT_LT(distanceBetween(run.odometry, run.truth), kPositionBound);
+  EXPECT_LT(std::abs(normalizeAngle(run.odometry.orientation.angle() - run.truth.orientation.angle())), kYawBound);
 }
 
 TEST(WheelEncoders, NoiseIsDeterministicPerSeed) {

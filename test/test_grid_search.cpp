@@ -1,13 +1,16 @@
-// The grid search (searchGrid and GridSearchWorkspace) against an independent, straightforward
-// Dijkstra written with CostGrid's own move rule and move costs (canMove, moveCost), on random
+// The grid search (searchGrid and GridSearchWorkspace) against the suite's reference Dijkstra
+// (test_support.hpp: the move rule written out, not CostGrid's canMove / moveCost), on random
 // cost maps with several cost rules (one steep enough to spread priorities far apart), corner
 // rules, windows, targets and reversed costs; one workspace serves maps of every size in turn.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <future>
 #include <limits>
+#include <memory>
 #include <new>
 #include <queue>
 #include <string>
@@ -32,33 +35,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Route costs from `source` to every cell of the window (reverse: from every cell to `source`),
-// by grid index; routes stay inside the window.
+// by grid index; routes stay inside the window. The suite's reference Dijkstra (test_support.hpp).
 std::vector<double> referenceCosts(const CostGrid& grid, const CellWindow& window, Cell source, bool reverse) {
-  std::vector<double> cost(grid.cellCount(), kInf);
-  if (!grid.isFree(source) || !window.contains(source)) return cost;
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-  cost[grid.index(source)] = 0.0;
-  open.push({0.0, grid.index(source)});
-  while (!open.empty()) {
-    const auto [d, i] = open.top();
-    open.pop();
-    if (d > cost[i]) continue;
-    const Cell here = grid.cellAt(i);
-    for (int dir = 0; dir < eaci::kDirections; ++dir) {
-      const Cell next = eaci::step(here, dir);
-      if (!window.contains(next) || !grid.isFree(next)) continue;
-      // Reverse: the move next -> here, in the opposite direction.
-      const int back = (dir + 4) % eaci::kDirections;
-      if (reverse ? !grid.canMove(next, back) : !grid.canMove(here, dir)) continue;
-      const double g = d + (reverse ? grid.moveCost(next, back) : grid.moveCost(here, dir));
-      if (g < cost[grid.index(next)]) {
-        cost[grid.index(next)] = g;
-        open.push({g, grid.index(next)});
-      }
-    }
-  }
-  return cost;
+  const auto inside = [window](int r, int c) { return window.contains(Cell{r, c}); };
+  return eaci::test::referenceCosts(eaci::test::referenceGridOf(grid, inside), source, reverse);
 }
 
 CostGrid randomGrid(std::mt19937& rng, int width, int height) {
@@ -429,12 +409,31 @@ TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   EXPECT_TRUE(remade->holdsFor(cheaper));
 }
 
-// A cache destroyed while it makes landmarks on a large map stops them instead of finishing.
+// A cache destroyed while it makes landmarks on a large map stops them instead of finishing:
+// the maker (Landmarks::compute, wrapped to see its answer) returns none. The destruction runs
+// on a thread of its own with a bound of its own, so that a hang fails here instead of at the
+// suite's 300 s timeout. The bound: the landmark thread runs at nice 19 and must be scheduled
+// to see the cancel flag; with a load of 8 on 2 cores the destruction took 2.5 to 11 s (idle:
+// milliseconds), so 60 s is a hang, not a slow machine.
 TEST(Landmarks, CacheDestroyedWhileMakingThemStops) {
+  constexpr auto kHangBound = std::chrono::seconds(60);
   const CostGrid grid(2000, 2000, false);
-  auto cache = std::make_unique<eaci::LandmarkCache>(8);
+  auto made = std::make_shared<std::atomic<int>>(0);  // 1: stopped with none, 2: finished
+  auto cache = std::make_unique<eaci::LandmarkCache>(8, [made](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+    auto landmarks = eaci::Landmarks::compute(g, count, cancel);
+    made->store(landmarks ? 2 : 1);
+    return landmarks;
+  });
   EXPECT_EQ(cache->usableFor(grid), nullptr);
-  cache.reset();  // joins the thread: a hang here would time the test out
+  auto destroyed = std::make_shared<std::promise<void>>();
+  std::future<void> done = destroyed->get_future();
+  std::thread([cache = std::move(cache), destroyed]() mutable {
+    cache.reset();  // cancels and joins the landmark thread
+    destroyed->set_value();
+  }).detach();  // left behind if it hangs: the process ends after the failure
+  ASSERT_EQ(done.wait_for(kHangBound), std::future_status::ready)
+      << "destroying the cache did not stop its landmark thread within 60 s";
+  EXPECT_EQ(made->load(), 1) << "the landmarks were finished instead of stopped";
 }
 
 TEST(Landmarks, ThoseThatFitInTheCap) {

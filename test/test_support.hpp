@@ -9,10 +9,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
+#include <limits>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/io/map_io.hpp"
@@ -74,6 +77,81 @@ inline std::string routeDefect(const CostGrid& grid, const CellPath& path, Cell 
     }
   }
   return "";
+}
+
+// The suite's one reference Dijkstra, written from the move rule of the spec
+// (/work/shared/eaci-spec.md section 2, the cost rule of global_planner) and not with the
+// planner's CostGrid::canMove / moveCost:
+//  - 8-connected: from (r, c) to (r + dr, c + dc), dr, dc in {-1, 0, 1}, not both 0;
+//  - the cell moved into must be open (free, on the map, inside any window the caller sets);
+//  - a diagonal move passes the corner of (r + dr, c) and (r, c + dc): without corner cutting
+//    both must be open too; with corner cutting (the paper's benchmarks) they need not be;
+//  - a straight move is 1 long, a diagonal sqrt(2); the move costs its length x
+//    (neutral_cost + cost_factor x k) / neutral_cost, k the cost 0..254 of the cell it enters
+//    (k = 0 everywhere: the route's cost is its length).
+struct ReferenceGrid {
+  int width = 0;
+  int height = 0;
+  std::function<bool(int row, int col)> open;                              // asked only on the map
+  std::function<int(int row, int col)> cost = [](int, int) { return 0; };  // of an open cell
+  bool corner_cutting = false;
+  double neutral_cost = 50.0;
+  double cost_factor = 3.0;
+};
+
+// The cheapest route's cost from `source` to every cell (reverse: from every cell to
+// `source`, each move costed by the cell it enters on that way), by row x width + col;
+// infinity where no route is. A closed source reaches nothing.
+inline std::vector<double> referenceCosts(const ReferenceGrid& g, Cell source, bool reverse = false) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> best(static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height), inf);
+  const auto open = [&](int r, int c) { return r >= 0 && c >= 0 && r < g.height && c < g.width && g.open(r, c); };
+  if (!open(source.row, source.col)) return best;
+  const auto at = [&](int r, int c) { return static_cast<std::size_t>(r) * static_cast<std::size_t>(g.width) + c; };
+  std::set<std::pair<double, std::size_t>> queue;  // (cost, cell): the cheapest first
+  best[at(source.row, source.col)] = 0.0;
+  queue.insert({0.0, at(source.row, source.col)});
+  while (!queue.empty()) {
+    const auto [cost, here] = *queue.begin();
+    queue.erase(queue.begin());
+    const int r = static_cast<int>(here / static_cast<std::size_t>(g.width));
+    const int c = static_cast<int>(here % static_cast<std::size_t>(g.width));
+    for (int dr = -1; dr <= 1; ++dr) {
+      for (int dc = -1; dc <= 1; ++dc) {
+        if ((dr == 0 && dc == 0) || !open(r + dr, c + dc)) continue;
+        const bool diagonal = dr != 0 && dc != 0;
+        if (diagonal && !g.corner_cutting && !(open(r + dr, c) && open(r, c + dc))) continue;
+        // Forward the move enters (r + dr, c + dc); reversed, the route's move goes from
+        // there into (r, c).
+        const int entered = reverse ? g.cost(r, c) : g.cost(r + dr, c + dc);
+        const double length = diagonal ? std::sqrt(2.0) : 1.0;
+        const double next_cost = cost + length * (g.neutral_cost + g.cost_factor * entered) / g.neutral_cost;
+        const std::size_t next = at(r + dr, c + dc);
+        if (next_cost < best[next]) {
+          queue.erase({best[next], next});
+          best[next] = next_cost;
+          queue.insert({next_cost, next});
+        }
+      }
+    }
+  }
+  return best;
+}
+
+// A CostGrid read as a ReferenceGrid: its free cells (inside `window_open` when given), cell
+// costs, corner rule and cost rule; the move rule stays the one written above.
+inline ReferenceGrid referenceGridOf(const CostGrid& grid, std::function<bool(int, int)> window_open = {}) {
+  ReferenceGrid g;
+  g.width = grid.width();
+  g.height = grid.height();
+  g.open = [&grid, window_open](int r, int c) {
+    return !grid.isBlocked(Cell{r, c}) && (!window_open || window_open(r, c));
+  };
+  g.cost = [&grid](int r, int c) { return static_cast<int>(grid.cost(Cell{r, c})); };
+  g.corner_cutting = grid.allowCornerCutting();
+  g.neutral_cost = grid.costRule().neutral_cost;
+  g.cost_factor = grid.costRule().cost_factor;
+  return g;
 }
 
 // Length from first principles: count straight and diagonal steps.

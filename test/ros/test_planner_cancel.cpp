@@ -140,8 +140,10 @@ TEST_F(PlannerCancel, CancelStopsTheRunningPlanSoonWithTheBestRouteSoFar) {
   EXPECT_LT(answer.seconds, 2.0 + bound);
   ASSERT_FALSE(answer.plan.poses.empty()) << "no best route so far after 2 s on the lab map";
   expectValidRoute(answer.plan);
-  // The next plan is not affected by the old cancel.
-  EXPECT_FALSE(cancel(kLong).success);
+  // The next plan is not affected by the old cancel, and a cancel now finds nothing to stop.
+  const auto late = cancel(kLong);
+  EXPECT_FALSE(late.success);
+  EXPECT_NE(late.message.find("no plan in progress"), std::string::npos) << late.message;
 }
 
 TEST_F(PlannerCancel, ConcurrentPlansRunOneAtATimeAndEachCanBeCancelled) {

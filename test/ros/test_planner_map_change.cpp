@@ -13,6 +13,7 @@
 
 #include "eaci/io/occupancy_map.hpp"
 #include "grid_conversion.hpp"
+#include "node_log.hpp"
 #include "route_check.hpp"
 
 namespace {
@@ -52,6 +53,23 @@ class MapChange : public ::testing::Test {
   void SetUp() override {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);
     ASSERT_TRUE(ros::service::waitForService(kService, ros::Duration(30.0)));
+    // The node's log lines reach only a connected subscriber: ask for a start off every map
+    // ("no map yet" before the first) until a line arrives.
+    bool connected = false;
+    for (int k = 0; k < 50 && !connected; ++k) {
+      plan(pose(-100.0, -100.0), pose(0.35, 0.35));
+      connected = !log_.waitFor({}, 0.2).empty();
+    }
+    ASSERT_TRUE(connected) << "no warning of eaci_planner_node on /rosout";
+  }
+
+  // The request gets an empty plan and the node names why: a warning or error of its own that
+  // holds `part` (the wording of src/service/planning_service.cpp and eaci::plan).
+  void expectRefusedWith(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                         const std::string& part) {
+    log_.clear();
+    EXPECT_TRUE(plan(start, goal).plan.poses.empty()) << "planned a request that must fail";
+    EXPECT_NE(log_.waitFor({part}), "") << "no line of the node holds '" << part << "'; it said:" << log_.seen();
   }
 
   // Publishes `map` and waits until the node plans on it: a probe request from `probe_start`
@@ -76,6 +94,7 @@ class MapChange : public ::testing::Test {
 
   ros::NodeHandle nh_;
   ros::Publisher map_pub_;
+  eaci_test::NodeLog log_{"/eaci_planner_node"};
 };
 
 }  // namespace
@@ -87,8 +106,8 @@ TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
   auto response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
-  // A goal beyond this map is refused.
-  EXPECT_TRUE(plan(pose(0.35, 0.35), pose(4.55, 1.55)).plan.poses.empty());
+  // A goal beyond this map is refused as off it.
+  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
 
   // 2. The map grows to 6 x 4 m and its origin moves to (-1, -1) (the same world point is now
   //    another cell); a wall with a door at the top now stands at x = 1.55 m, across the straight
@@ -106,11 +125,15 @@ TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(grown, response.plan, 0.35, 0.35, 4.55, 1.55), "");
 
+  // 2b. The same wall without its door: the far goal is on the map and free, but unreachable.
+  publish(room(60, 40, {-1.0, -1.0}, /*wall_col=*/25));
+  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "cannot be reached from start");
+
   // 3. The map shrinks again (a rolling window moving away): the far goal is refused, the near
   //    one is planned on the small map's cells, and a start now off the map is refused.
   publish(small);
-  EXPECT_TRUE(plan(pose(0.35, 0.35), pose(4.55, 1.55)).plan.poses.empty());
-  EXPECT_TRUE(plan(pose(-0.55, -0.55), pose(1.55, 1.55)).plan.poses.empty());
+  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
+  expectRefusedWith(pose(-0.55, -0.55), pose(1.55, 1.55), "start (-0.550, -0.550) is off the costmap");
   response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");

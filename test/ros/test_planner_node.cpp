@@ -4,9 +4,11 @@
 #include <ros/ros.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "eaci/io/map_io.hpp"
+#include "node_log.hpp"
 
 namespace {
 
@@ -38,6 +40,25 @@ class PlannerNode : public ::testing::Test {
     ASSERT_TRUE(ros::param::get("~map_file", file));
     map_ = eaci::loadMap(file);
     ASSERT_TRUE(ros::service::waitForService(kService, ros::Duration(30.0)));
+    // The node's log lines reach only a connected subscriber: ask for a goal off the map until
+    // its warning arrives.
+    bool connected = false;
+    for (int k = 0; k < 50 && !connected; ++k) {
+      plan(pose(0.4, 0.4), pose(10.0, 10.0));
+      connected = !log_.waitFor({"is off the costmap"}, 0.2).empty();
+    }
+    ASSERT_TRUE(connected) << "no warning of eaci_planner_node on /rosout";
+  }
+
+  // The request gets an empty plan and the node says why: a warning or error of its own that
+  // holds every one of `parts`.
+  void expectRefusedWith(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                         std::initializer_list<std::string> parts) {
+    log_.clear();
+    EXPECT_TRUE(plan(start, goal).plan.poses.empty()) << "planned a request that must fail";
+    std::string wanted;
+    for (const std::string& part : parts) wanted += " '" + part + "'";
+    EXPECT_NE(log_.waitFor(parts), "") << "no line of the node holds" << wanted << "; it said:" << log_.seen();
   }
 
   bool freeAt(double x, double y) const {
@@ -46,6 +67,7 @@ class PlannerNode : public ::testing::Test {
   }
 
   eaci::OccupancyMap map_;
+  eaci_test::NodeLog log_{"/eaci_planner_node"};
 };
 
 }  // namespace
@@ -75,20 +97,26 @@ TEST_F(PlannerNode, PlansACollisionFreeRouteAcrossTheLab) {
   EXPECT_LT(length, 1.2 * 4.9113);  // A* optimum on this map: 98.2254 cells = 4.9113 m
 }
 
-TEST_F(PlannerNode, BadRequestsGetAnEmptyPlanAndTheNodeStaysUp) {
+// Each bad request fails for its own reason, which the node names (src/service/planning_service.cpp
+// and src/ros/ros_planner.cpp word them; positions are printed with three decimals).
+TEST_F(PlannerNode, BadRequestsGetAnEmptyPlanNamingTheirFaultAndTheNodeStaysUp) {
   // Goal in the border wall (the map's bottom-left cell), no tolerance.
   EXPECT_FALSE(freeAt(0.025, 0.025));
-  EXPECT_TRUE(plan(pose(0.4, 0.4), pose(0.025, 0.025)).plan.poses.empty());
+  expectRefusedWith(pose(0.4, 0.4), pose(0.025, 0.025),
+                    {"goal (0.025, 0.025) is in an obstacle and no free cell lies within 0 m of it"});
   // Start in the wall.
-  EXPECT_TRUE(plan(pose(0.025, 1.0), pose(4.4, 2.6)).plan.poses.empty());
-  // Off the map.
-  EXPECT_TRUE(plan(pose(0.4, 0.4), pose(10.0, 10.0)).plan.poses.empty());
-  EXPECT_TRUE(plan(pose(-1.0, 0.4), pose(4.4, 2.6)).plan.poses.empty());
+  EXPECT_FALSE(freeAt(0.025, 1.0));
+  expectRefusedWith(pose(0.025, 1.0), pose(4.4, 2.6), {"start (0.025, 1.000): the start is in a lethal obstacle"});
+  // Off the map (4.8 x 3.0 m from the origin).
+  expectRefusedWith(pose(0.4, 0.4), pose(10.0, 10.0), {"goal (10.000, 10.000) is off the costmap"});
+  expectRefusedWith(pose(-1.0, 0.4), pose(4.4, 2.6), {"start (-1.000, 0.400) is off the costmap"});
   // A frame nobody publishes.
-  EXPECT_TRUE(plan(pose(0.4, 0.4, "nowhere"), pose(4.4, 2.6)).plan.poses.empty());
-  EXPECT_TRUE(plan(pose(0.4, 0.4), pose(4.4, 2.6, "nowhere")).plan.poses.empty());
-  // NaN.
-  EXPECT_TRUE(plan(pose(std::nan(""), 0.4), pose(4.4, 2.6)).plan.poses.empty());
+  expectRefusedWith(pose(0.4, 0.4, "nowhere"), pose(4.4, 2.6),
+                    {"the start is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
+  expectRefusedWith(pose(0.4, 0.4), pose(4.4, 2.6, "nowhere"),
+                    {"the goal is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
+  // NaN: no cell holds it.
+  expectRefusedWith(pose(std::nan(""), 0.4), pose(4.4, 2.6), {"start (", "nan, 0.400) is off the costmap"});
   // Still answering.
   EXPECT_FALSE(plan(pose(0.4, 0.4), pose(4.4, 2.6)).plan.poses.empty());
 }
@@ -107,5 +135,7 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_planner_node");
   ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(1);  // /rosout lines for NodeLog
+  spinner.start();
   return RUN_ALL_TESTS();
 }
