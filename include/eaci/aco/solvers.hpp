@@ -73,8 +73,8 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
     plan.route_cost = shortest.cost;
   }
   if (plan.route.empty()) return plan;
-  plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
-                                      start, goal, params.islands, params.island_spacing_max);
+  plan.islands = geodesicIslands([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route, start,
+                                 goal, params.islands, params.island_spacing_max);
   plan.leg_distance = legDistanceFields(grid, plan.route, plan.islands, stop);
   return plan;
 }
