@@ -43,7 +43,7 @@ void walkSetupFor(eaci::IslandStrategy strategy, benchmark::State& state,
   eaci::ColonyRegion region = eaci::colonyRegion(f.grid, islands, p);
   eaci::PheromoneField field = eaci::initialIslandPheromone(f.grid, region, islands.islands, p.lambda, p.alpha);
   const eaci::WalkSetup setup(f.grid, std::move(region), field, islands.islands, eaci::HeuristicRule::kTurningAware,
-                              p.beta, p.epsilon, std::move(islands.leg_distance));
+                              p.beta, p.epsilon, std::move(islands.leg_cost));
   for (auto _ : state) body(setup, field);
 }
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
@@ -61,13 +61,13 @@ TEST(AStar, GivesThePublishedOptimaOfThePaperMaps) {
   }
 }
 
-TEST(AStar, LegDistanceFieldAgreesWithAStar) {
+TEST(AStar, LegCostFieldAgreesWithAStar) {
   // The backward search of the islands' leg fields, over the whole map: the route from corner
   // to corner spans every row and column, so the field's window is the whole map.
   const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   const auto route = eaci::shortestPath(grid, Cell{29, 0}, Cell{0, 29});
   ASSERT_TRUE(route.found);
-  const eaci::LegDistanceField field(grid, route.path, Cell{0, 29});
+  const eaci::LegCostField field(grid, route.path, Cell{0, 29});
   EXPECT_NEAR(field.at(Cell{29, 0}), 44.5269, 1e-4);
   EXPECT_DOUBLE_EQ(field.at(Cell{0, 29}), 0.0);
   int reached = 0;

@@ -232,15 +232,18 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
   EXPECT_EQ(j["parameters"]["seed"], 3);
   EXPECT_EQ(j["parameters"]["max_iterations"], 20);
   EXPECT_EQ(j["lost_ants_per_iteration"].size(), 20u);
-  EXPECT_EQ(j["best_length_per_iteration"].size(), 20u);
-  EXPECT_EQ(j["best_length_so_far"].size(), 20u);
+  EXPECT_EQ(j["best_cost_per_iteration"].size(), 20u);
+  EXPECT_EQ(j["best_cost_so_far"].size(), 20u);
+  // The keys' names before the cost model stay for one release, with the same values.
+  EXPECT_EQ(j["best_length_per_iteration"], j["best_cost_per_iteration"]);
+  EXPECT_EQ(j["best_length_so_far"], j["best_cost_so_far"]);
   long long lost = 0;
   for (const auto& v : j["lost_ants_per_iteration"]) lost += v.get<long long>();
   EXPECT_EQ(j["lost_ants_total"].get<long long>(), lost);
   EXPECT_GE(j["iterations_to_converge"].get<int>(), 1);
   EXPECT_LE(j["iterations_to_converge"].get<int>(), 20);
-  EXPECT_NEAR(j["best_length_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);
-  for (const auto& v : j["best_length_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
+  EXPECT_NEAR(j["best_cost_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);  // a binary map
+  for (const auto& v : j["best_cost_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
   ASSERT_GE(j["islands"].size(), 2u);
   EXPECT_EQ(j["islands"].front(), json::array({0, 0}));
   EXPECT_EQ(j["islands"].back(), json::array({19, 19}));

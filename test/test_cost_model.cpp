@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "eaci/planner.hpp"
-#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
@@ -212,7 +212,7 @@ TEST(CostModel, AStarCostEqualsAnIndependentWeightedDijkstra) {
       EXPECT_EQ(eaci::test::routeDefect(grid, astar.path, s, g), "") << "seed " << seed;
       // A leg's cost field searches backwards and holds costs *to* its island: around a cheapest
       // route to g, read at s, it is that route's cost.
-      EXPECT_NEAR(eaci::LegDistanceField(grid, astar.path, g).at(s), reference, 1e-9 * reference) << "seed " << seed;
+      EXPECT_NEAR(eaci::LegCostField(grid, astar.path, g).at(s), reference, 1e-9 * reference) << "seed " << seed;
     }
   }
   EXPECT_GT(compared, 40);

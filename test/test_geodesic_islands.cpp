@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "eaci/aco/geodesic_islands.hpp"
-#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/solvers.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
@@ -74,12 +74,12 @@ TEST(GeodesicIslands, RouteThroughTheIslandsIsTheOptimum) {
   }
 }
 
-TEST(LegDistanceField, ExactInsideTheWindowAndNeverBetterOutside) {
+TEST(LegCostField, ExactInsideTheWindowAndNeverBetterOutside) {
   // 12 x 12 open map with a wall; the island at (6,9), a leg from (6,2).
   CostGrid grid = emptyGrid(12, 12);
   for (int r = 3; r <= 9; ++r) grid.setBlocked(Cell{r, 6}, true);
   const CellPath leg = {{6, 2}, {5, 3}, {4, 4}, {3, 5}, {2, 6}, {3, 7}, {4, 8}, {5, 9}, {6, 9}};
-  const eaci::LegDistanceField field(grid, leg, Cell{6, 9});
+  const eaci::LegCostField field(grid, leg, Cell{6, 9});
   EXPECT_DOUBLE_EQ(field.at(Cell{6, 9}), 0.0);
   EXPECT_NEAR(field.at(Cell{6, 8}), 1.0, 1e-12);
   // The window is rows 0-10 (the leg's rows 2-6, margin 4), all columns: inside it the
@@ -92,12 +92,12 @@ TEST(LegDistanceField, ExactInsideTheWindowAndNeverBetterOutside) {
   EXPECT_GT(field.at(Cell{11, 11}), field.at(Cell{0, 0}));
 }
 
-TEST(LegDistanceField, CellsOutsideTheWindowReadAsFarAway) {
+TEST(LegCostField, CellsOutsideTheWindowReadAsFarAway) {
   const CostGrid grid = emptyGrid(40, 40);
   const CellPath leg = {{20, 20}, {20, 21}, {20, 22}};
-  const eaci::LegDistanceField field(grid, leg, Cell{20, 22});
+  const eaci::LegCostField field(grid, leg, Cell{20, 22});
   // The window is the leg plus a margin of kMinWindowMargin (1): (20, 30) lies outside it.
-  static_assert(eaci::LegDistanceField::kMinWindowMargin == 1, "the cells below assume a margin of 1");
+  static_assert(eaci::LegCostField::kMinWindowMargin == 1, "the cells below assume a margin of 1");
   const double outside = field.at(Cell{20, 30});
   EXPECT_GE(outside, 8.0);                     // at least the straight-line distance
   EXPECT_GT(outside, field.at(Cell{20, 23}));  // the window's edge, 1 away

@@ -251,7 +251,7 @@ TEST(PlannerLimits, NothingStoppedKeepsThePaperRoutesOfAPlanWithAStopCheck) {
   ASSERT_TRUE(with_check.success());
   EXPECT_GT(calls, 0);
   EXPECT_EQ(with_check.path, without.path);
-  EXPECT_EQ(with_check.best_length_so_far, without.best_length_so_far);
+  EXPECT_EQ(with_check.best_cost_so_far, without.best_cost_so_far);
   EXPECT_FALSE(with_check.interrupted);
 }
 

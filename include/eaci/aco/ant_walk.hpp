@@ -11,7 +11,7 @@
 #include "eaci/aco/ant_route.hpp"
 #include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/heuristic.hpp"
-#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/aco/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
@@ -88,8 +88,8 @@ struct WalkSetup {
   std::vector<Cell> waypoints;                // L_1 = S, ..., L_N = E
   std::vector<std::int32_t> waypoint_of_cell;  // per region cell: its index in `waypoints`, or -1
   // d_jg of the heuristic: empty -> Euclidean distance to the leg's goal (the paper);
-  // else leg_distance[z] is the route cost to waypoint z (geodesic islands).
-  std::vector<LegDistanceField> leg_distance;
+  // else leg_cost[z] is the route cost to waypoint z (geodesic islands).
+  std::vector<LegCostField> leg_cost;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   InversePower eta_power{7.0};                // x -> x^-beta
   // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
@@ -105,15 +105,15 @@ struct WalkSetup {
 
   // Ants on the whole map.
   WalkSetup(const CostGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
-            double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
+            double beta, double epsilon, std::vector<LegCostField> leg_costs = {})
       : WalkSetup(g, ColonyRegion::wholeMap(g), field, std::move(points), rule, beta, epsilon,
-                  std::move(leg_distances)) {}
+                  std::move(leg_costs)) {}
 
   // Ants on `cells` (which must hold every waypoint; `field` is indexed by its cells).
   WalkSetup(const CostGrid& g, ColonyRegion cells, const PheromoneField& field, std::vector<Cell> points,
-            HeuristicRule rule, double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
+            HeuristicRule rule, double beta, double epsilon, std::vector<LegCostField> leg_costs = {})
       : grid(&g), pheromone(&field), region(std::move(cells)), waypoints(std::move(points)),
-        waypoint_of_cell(region.size(), -1), leg_distance(std::move(leg_distances)), heuristic(rule),
+        waypoint_of_cell(region.size(), -1), leg_cost(std::move(leg_costs)), heuristic(rule),
         eta_power(beta) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
       waypoint_of_cell[region.regionIndex(waypoints[w])] = static_cast<std::int32_t>(w);
@@ -125,7 +125,7 @@ struct WalkSetup {
 
   // d_jg: distance from `next` to waypoint `target`.
   double distanceToWaypoint(Cell next, std::size_t target) const {
-    if (!leg_distance.empty()) return leg_distance[target].at(next);
+    if (!leg_cost.empty()) return leg_cost[target].at(next);
     const Cell goal = waypoints[target];
     return std::hypot(next.row - goal.row, next.col - goal.col);
   }
@@ -135,7 +135,7 @@ struct WalkSetup {
     distance_table.clear();
     const std::size_t entries = region.size() * (waypoints.size() - 1);
     if (entries > kMaxDistanceTableEntries) return;
-    if (!leg_distance.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
+    if (!leg_cost.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
     distance_table.resize(waypoints.size());
     for (std::size_t z = 1; z < waypoints.size(); ++z) {
       distance_table[z].resize(region.size());
@@ -154,7 +154,7 @@ struct WalkSetup {
     const double sigma = turning_cost[previous_dir + 1][dir];
     const Cell to = step(from, dir);
     double distance = distance_table.empty() ? distanceToWaypoint(to, target) : distance_table[target][next];
-    if (!leg_distance.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
+    if (!leg_cost.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
     return distance + sigma;
   }
 

@@ -1,5 +1,5 @@
 // One search over the grid's moves, behind every exact search of the project: A*
-// (shortestPath), the island leg fields (LegDistanceField) and reachability
+// (shortestPath), the island leg fields (LegCostField) and reachability
 // (reachableFrom). What differs between them is a
 // parameter: a target to stop at (and steer towards), a window to stay in, whether to keep
 // the moves for the route back, and whether distances matter at all.
