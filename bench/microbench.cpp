@@ -43,7 +43,7 @@ void walkSetupFor(eaci::IslandStrategy strategy, benchmark::State& state,
   eaci::ColonyRegion region = eaci::colonyRegion(f.grid, islands, p);
   eaci::PheromoneField field = eaci::initialIslandPheromone(f.grid, region, islands.islands, p.lambda, p.alpha);
   const eaci::WalkSetup setup(f.grid, std::move(region), field, islands.islands, eaci::HeuristicRule::kTurningAware,
-                              p.beta, p.epsilon, std::move(islands.leg_distance));
+                              p.beta, p.epsilon, std::move(islands.leg_cost));
   for (auto _ : state) body(setup, field);
 }
 
@@ -173,12 +173,15 @@ void BM_LandmarksBuilding(benchmark::State& state) {
 }
 BENCHMARK(BM_LandmarksBuilding)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 
-// The Dijkstra cost field of the whole building (every free cell settled).
+// A backward Dijkstra search (a leg cost field's) over the whole building (every free cell settled).
 void BM_CostFieldBuilding(benchmark::State& state) {
   const eaci::CostGrid& grid = buildingGrid();
+  eaci::GridSearchRequest request;
+  request.source = eaci::Cell{1020, 1020};
+  request.reverse_costs = true;
   for (auto _ : state) {
-    const std::vector<double> field = eaci::costField(grid, eaci::Cell{1020, 1020});
-    benchmark::DoNotOptimize(field.data());
+    const eaci::GridSearchResult field = eaci::searchGrid(grid, request);
+    benchmark::DoNotOptimize(field.at(eaci::Cell{0, 0}));
   }
 }
 BENCHMARK(BM_CostFieldBuilding)->Unit(benchmark::kMillisecond);

@@ -6,21 +6,24 @@
 using eaci::Cell;
 
 TEST(CellNumbering, SerialNumbersRunLeftToRightTopToBottom) {
-  EXPECT_EQ(eaci::serialNumber(Cell{0, 0}, 10), 1);
-  EXPECT_EQ(eaci::serialNumber(Cell{0, 2}, 10), 3);    // the paper's start in Figure 6
-  EXPECT_EQ(eaci::serialNumber(Cell{2, 4}, 10), 25);
-  EXPECT_EQ(eaci::serialNumber(Cell{9, 9}, 10), 100);
-  EXPECT_EQ(eaci::serialNumber(Cell{48, 49}, 50), 2450);
+  EXPECT_EQ(eaci::cellFromSerial(1, 10), (Cell{0, 0}));
+  EXPECT_EQ(eaci::cellFromSerial(3, 10), (Cell{0, 2}));    // the paper's start in Figure 6
+  EXPECT_EQ(eaci::cellFromSerial(25, 10), (Cell{2, 4}));
+  EXPECT_EQ(eaci::cellFromSerial(100, 10), (Cell{9, 9}));
+  EXPECT_EQ(eaci::cellFromSerial(2450, 50), (Cell{48, 49}));
 }
 
-TEST(CellNumbering, SerialToCellIsTheInverse) {
+TEST(CellNumbering, SerialToCell) {
   EXPECT_EQ(eaci::cellFromSerial(1, 20), (Cell{0, 0}));
   EXPECT_EQ(eaci::cellFromSerial(400, 20), (Cell{19, 19}));
   EXPECT_EQ(eaci::cellFromSerial(871, 30), (Cell{29, 0}));  // 30x30 start
   EXPECT_EQ(eaci::cellFromSerial(30, 30), (Cell{0, 29}));   // 30x30 goal
   EXPECT_EQ(eaci::cellFromSerial(2451, 50), (Cell{49, 0}));
   EXPECT_EQ(eaci::cellFromSerial(50, 50), (Cell{0, 49}));
-  for (int g = 1; g <= 12; ++g) EXPECT_EQ(eaci::serialNumber(eaci::cellFromSerial(g, 4), 4), g);
+  // Counting the cells of a 3 x 4 map left to right, top to bottom gives their serial numbers.
+  int g = 0;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(eaci::cellFromSerial(++g, 4), (Cell{r, c})) << g;
 }
 
 TEST(CellNumbering, CentreCoordinatesHaveTheOriginBottomLeft) {

@@ -234,8 +234,11 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
   EXPECT_EQ(j["parameters"]["seed"], 3);
   EXPECT_EQ(j["parameters"]["max_iterations"], 20);
   EXPECT_EQ(j["lost_ants_per_iteration"].size(), 20u);
-  EXPECT_EQ(j["best_length_per_iteration"].size(), 20u);
-  EXPECT_EQ(j["best_length_so_far"].size(), 20u);
+  EXPECT_EQ(j["best_cost_per_iteration"].size(), 20u);
+  EXPECT_EQ(j["best_cost_so_far"].size(), 20u);
+  // The keys' names before the cost model stay for one release, with the same values.
+  EXPECT_EQ(j["best_length_per_iteration"], j["best_cost_per_iteration"]);
+  EXPECT_EQ(j["best_length_so_far"], j["best_cost_so_far"]);
   long long lost = 0;
   for (const auto& v : j["lost_ants_per_iteration"]) lost += v.get<long long>();
   EXPECT_EQ(j["lost_ants_total"].get<long long>(), lost);
@@ -245,13 +248,13 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
   const int converged = j["iterations_to_converge"].get<int>();
   ASSERT_GE(converged, 1);
   ASSERT_LE(converged, 20);
-  const json& best_so_far = j["best_length_so_far"];
+  const json& best_so_far = j["best_cost_so_far"];  // a binary map: cost = length
   EXPECT_NEAR(best_so_far[converged - 1].get<double>(), j["length"].get<double>(), 1e-9);
   if (converged > 1 && !best_so_far[converged - 2].is_null()) {  // null: no route yet
     EXPECT_GT(best_so_far[converged - 2].get<double>(), j["length"].get<double>() + 1e-9);
   }
-  EXPECT_NEAR(j["best_length_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);
-  for (const auto& v : j["best_length_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
+  EXPECT_NEAR(j["best_cost_so_far"].back().get<double>(), j["length"].get<double>(), 1e-9);
+  for (const auto& v : j["best_cost_per_iteration"]) EXPECT_TRUE(v.is_null() || v.is_number());
   ASSERT_GE(j["islands"].size(), 2u);
   EXPECT_EQ(j["islands"].front(), json::array({0, 0}));
   EXPECT_EQ(j["islands"].back(), json::array({19, 19}));

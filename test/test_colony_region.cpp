@@ -42,8 +42,8 @@ TEST(ColonyRegion, HoldsTheCellsWithinTheMarginNumberedInGridOrder) {
     EXPECT_EQ(grid.cellAt(region.gridIndex(r)), expected[r]) << r;
     EXPECT_EQ(regionCell(region, grid, expected[r]), r);
   }
-  EXPECT_FALSE(region.contains(grid.index(Cell{0, 0})));
-  EXPECT_FALSE(region.contains(grid.index(Cell{2, 3})));
+  EXPECT_EQ(regionCell(region, grid, Cell{0, 0}), kNone);
+  EXPECT_EQ(regionCell(region, grid, Cell{2, 3}), kNone);
   EXPECT_EQ(region.gridCellCount(), 30u);
 }
 
@@ -94,8 +94,11 @@ TEST(ColonyRegion, WholeMapNumbersCellsByGridIndexAndMovesByTheGridsRule) {
   const CostGrid grid = CostGrid::fromRows({{0, 1, 0}, {0, 0, 0}}, false);
   const ColonyRegion region = ColonyRegion::wholeMap(grid);
   ASSERT_EQ(region.size(), 6u);
-  EXPECT_TRUE(region.isWholeMap());
-  for (std::uint32_t r = 0; r < 6; ++r) EXPECT_EQ(region.gridIndex(r), r);
+  EXPECT_EQ(region.gridCellCount(), 6u);
+  for (std::uint32_t r = 0; r < 6; ++r) {
+    EXPECT_EQ(region.gridIndex(r), r);
+    EXPECT_EQ(region.regionIndex(std::size_t{r}), r);
+  }
   EXPECT_EQ(region.neighbour(0, kEast), kNone);       // (0,1) is an obstacle
   EXPECT_EQ(region.neighbour(0, kSouth), 3u);         // (1,0)
   EXPECT_EQ(region.neighbour(0, kSouthEast), kNone);  // would cut the obstacle's corner

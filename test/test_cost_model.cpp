@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "eaci/planner.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
@@ -190,8 +191,9 @@ TEST(CostModel, AStarCostEqualsAnIndependentWeightedDijkstra) {
       EXPECT_NEAR(eaci::routeCost(grid, astar.path), astar.cost, 1e-9 * reference);
       EXPECT_NEAR(eaci::test::countedLength(astar.path), astar.length, 1e-9);
       EXPECT_EQ(eaci::test::routeDefect(grid, astar.path, s, g), "") << "seed " << seed;
-      // The cost field holds costs *to* its cell: read at s, it is the route's cost.
-      EXPECT_NEAR(eaci::costField(grid, g)[grid.index(s)], reference, 1e-9 * reference) << "seed " << seed;
+      // A leg's cost field searches backwards and holds costs *to* its island: around a cheapest
+      // route to g, read at s, it is that route's cost.
+      EXPECT_NEAR(eaci::LegCostField(grid, astar.path, g).at(s), reference, 1e-9 * reference) << "seed " << seed;
     }
   }
   EXPECT_GT(compared, 40);

@@ -5,6 +5,7 @@
 
 #include "eaci/aco/initial_pheromone.hpp"
 
+using eaci::ColonyRegion;
 using eaci::CostGrid;
 using eaci::Cell;
 
@@ -23,7 +24,7 @@ TEST(InitialPheromone, HandComputedRegion) {
   // The region is columns 0-2; column 3 lies outside.
   const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}}, true);
   const double lambda = 3.0;
-  const auto field = eaci::initialIslandPheromone(grid, {Cell{2, 0}, Cell{0, 2}}, lambda, 1.0);
+  const auto field = eaci::initialIslandPheromone(grid, ColonyRegion::wholeMap(grid), {Cell{2, 0}, Cell{0, 2}}, lambda, 1.0);
   const double sqrt2 = std::sqrt(2.0);
   const double max_tau0 = 2.0 * sqrt2;   // midpoints 0.5/sqrt2 from the line
   const double min_tau0 = sqrt2 / 1.5;   // midpoints 1.5/sqrt2 from the line
@@ -51,14 +52,14 @@ TEST(InitialPheromone, EdgeInTwoRegionsTakesTheLargerValue) {
   // is 0.5/sqrt2 away -> 2 sqrt2. Region 2 (cols 0-2): line x - 2y + 0.5 = 0, 1/sqrt5 away
   // -> sqrt5. The larger, 2 sqrt2, must win although region 2 comes last.
   const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0}, {0, 0, 0, 0}}, true);
-  const auto field = eaci::initialIslandPheromone(grid, {Cell{1, 3}, Cell{0, 2}, Cell{1, 0}}, 3.0, 1.0);
+  const auto field = eaci::initialIslandPheromone(grid, ColonyRegion::wholeMap(grid), {Cell{1, 3}, Cell{0, 2}, Cell{1, 0}}, 3.0, 1.0);
   EXPECT_NEAR(field.tau(grid.index(Cell{1, 2}), kNorth), 2.0 * std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(field.tau(grid.index(Cell{0, 2}), 6), 2.0 * std::sqrt(2.0), 1e-12);
 }
 
 TEST(InitialPheromone, WeightsAreTauToTheAlpha) {
   const CostGrid grid = CostGrid::fromRows({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, true);
-  const auto field = eaci::initialIslandPheromone(grid, {Cell{2, 0}, Cell{0, 2}}, 3.0, 1.1);
+  const auto field = eaci::initialIslandPheromone(grid, ColonyRegion::wholeMap(grid), {Cell{2, 0}, Cell{0, 2}}, 3.0, 1.1);
   const std::size_t i = grid.index(Cell{2, 0});
   EXPECT_NEAR(field.weight(i, kEast), std::pow(2.0 * std::sqrt(2.0), 1.1), 1e-12);
 }

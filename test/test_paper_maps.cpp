@@ -62,8 +62,8 @@ MapRuns runEaciTwentySeeds(const eaci::test::PaperCase& pc,
     long long lost = 0;
     for (int l : r.lost_ants_per_iteration) lost += l;
     EXPECT_EQ(lost, r.lost_ants_total);
-    EXPECT_NEAR(r.best_length_so_far.back(), r.length, 1e-9);
-    EXPECT_NEAR(r.best_length_so_far[static_cast<std::size_t>(r.iterations_to_converge - 1)], r.length, 1e-9);
+    EXPECT_NEAR(r.best_cost_so_far.back(), r.length, 1e-9);
+    EXPECT_NEAR(r.best_cost_so_far[static_cast<std::size_t>(r.iterations_to_converge - 1)], r.length, 1e-9);
   }
   return stats;
 }

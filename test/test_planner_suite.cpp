@@ -190,7 +190,7 @@ TEST(PlannerDeterminism, SameSeedSameResultOnAnyThreadCount) {
     for (const auto* other : {&two, &three, &again}) {
       EXPECT_EQ(one.path, other->path);
       EXPECT_EQ(one.lost_ants_per_iteration, other->lost_ants_per_iteration);
-      EXPECT_EQ(one.iteration_best_length, other->iteration_best_length);
+      EXPECT_EQ(one.iteration_best_cost, other->iteration_best_cost);
     }
     p.seed = 8;
     const auto other_seed = eaci::plan(grid, Cell{0, 0}, Cell{39, 39}, algorithm, p);
@@ -273,7 +273,7 @@ TEST(PlannerDeterminism, KeptWorkspaceGivesWhatFreshPlansGive) {
     EXPECT_EQ(with_workspace.path, without.path);
     EXPECT_EQ(with_workspace.islands, without.islands);
     EXPECT_EQ(with_workspace.lost_ants_per_iteration, without.lost_ants_per_iteration);
-    EXPECT_EQ(with_workspace.iteration_best_length, without.iteration_best_length);
+    EXPECT_EQ(with_workspace.iteration_best_cost, without.iteration_best_cost);
     EXPECT_EQ(with_workspace.pheromone, without.pheromone);
   }
 }

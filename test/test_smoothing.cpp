@@ -65,11 +65,30 @@ TEST(Smoothing, TakesNoShortcutNearerTheWallsThanTheRoute) {
   grid.setCost(Cell{1, 2}, 30);
   const CellPath route{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {3, 6}};
   ASSERT_DOUBLE_EQ(eaci::routeCost(grid, route), 9.0);
-  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 6}), 30);
-  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 3}), 30);
-  EXPECT_EQ(eaci::segmentPeakCost(grid, Cell{0, 0}, Cell{3, 2}), 0);
+  EXPECT_EQ(eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{3, 6}).peak, 30);
+  EXPECT_EQ(eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{3, 3}).peak, 30);
+  EXPECT_EQ(eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{3, 2}).peak, 0);
   ASSERT_LT(eaci::segmentCost(grid, Cell{0, 0}, Cell{3, 6}), 9.0);  // cheaper, yet not taken
   EXPECT_EQ(eaci::smoothRoute(grid, route), (CellPath{{0, 0}, {3, 2}, {3, 6}}));
+}
+
+TEST(Smoothing, SegmentWalkEndsOnceOverABound) {
+  // Row 0 of 10 cells of cost 0 but (0,5), cost 40. From (0,0) to (0,9) the segment lies half
+  // a cell in each end cell and a whole cell in the 8 between: length 9, peak 40.
+  CostGrid grid = open(1, 10);
+  grid.setCost(Cell{0, 5}, 40);
+  const double surcharge = 3.0 * 40 / 50;  // cost_factor x c / neutral_cost per unit length
+  const auto whole = eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{0, 9});
+  EXPECT_NEAR(whole.cost, 9.0 + surcharge, 1e-12);
+  EXPECT_EQ(whole.peak, 40);
+  // Over a cost bound of 3 it stops after (0,3): 0.5 + 3 x 1 = 3.5, peak 0 so far.
+  const auto over_cost = eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{0, 9}, 3.0);
+  EXPECT_NEAR(over_cost.cost, 3.5, 1e-12);
+  EXPECT_EQ(over_cost.peak, 0);
+  // Over a peak bound of 10 it stops in (0,5): 0.5 + 4 + (1 + surcharge).
+  const auto over_peak = eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{0, 9}, 100.0, 10);
+  EXPECT_NEAR(over_peak.cost, 5.5 + surcharge, 1e-12);
+  EXPECT_EQ(over_peak.peak, 40);
 }
 
 TEST(Smoothing, PlannerSmoothsOnlyWhenAsked) {

@@ -184,8 +184,8 @@ TEST(PlannerLimits, SmoothingStoppedReturnsAValidRoute) {
   EXPECT_EQ(eaci::smoothRoute(grid, route, &stop), route);
   EXPECT_TRUE(stop.stopped());
   // A serpentine: corridors 40 cells long joined at alternate ends. The tries from a corner
-  // end at the next turn (about 40 x 41 cells walked for the 40 of a corridor), so the
-  // second check (8192 cells walked) comes some five corridors in: those are smoothed, the
+  // end at the next turn (about 40 x 41 / 2 cells spanned for the 40 of a corridor), so the
+  // second check (8192 cells) comes some ten corridors in: those are smoothed, the
   // rest of the route is its own cells.
   CostGrid serpentine(42, 41, false);
   for (int row = 1; row < 41; row += 2)
@@ -251,7 +251,7 @@ TEST(PlannerLimits, NothingStoppedKeepsThePaperRoutesOfAPlanWithAStopCheck) {
   ASSERT_TRUE(with_check.success());
   EXPECT_GT(calls, 0);
   EXPECT_EQ(with_check.path, without.path);
-  EXPECT_EQ(with_check.best_length_so_far, without.best_length_so_far);
+  EXPECT_EQ(with_check.best_cost_so_far, without.best_cost_so_far);
   EXPECT_FALSE(with_check.interrupted);
 }
 

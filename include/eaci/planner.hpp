@@ -101,10 +101,10 @@ struct PlanResult {
   long long lost_ants_total = 0;
   std::vector<int> ants_per_iteration;  // m, fewer where stop_gap ended an iteration after a wave of ants
   std::vector<int> lost_ants_per_iteration;
-  // The route quality L_k per iteration: the cost (the length on a binary map; the names are
-  // the paper's, whose maps are binary).
-  std::vector<double> iteration_best_length;  // +infinity where no ant arrived
-  std::vector<double> best_length_so_far;
+  // The route quality L_k per iteration: the cost of the best route (the length on a binary map,
+  // as on the paper's maps).
+  std::vector<double> iteration_best_cost;  // that iteration's best; +infinity where no ant arrived
+  std::vector<double> best_cost_so_far;     // the best of this and every earlier iteration
   std::vector<Cell> islands;       // EACI: S, islands, E; ACO and A*: S, E
   std::vector<double> pheromone;   // per cell, row-major, if requested
 
@@ -147,8 +147,8 @@ inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, con
   r.ants_per_iteration = colony.run.ants_per_iteration;
   r.lost_ants_per_iteration = colony.run.lost_ants_per_iteration;
   for (int lost : r.lost_ants_per_iteration) r.lost_ants_total += lost;
-  r.iteration_best_length = colony.run.iteration_best_cost;
-  r.best_length_so_far = colony.run.best_cost_so_far;
+  r.iteration_best_cost = colony.run.iteration_best_cost;
+  r.best_cost_so_far = colony.run.best_cost_so_far;
   for (std::uint32_t index : colony.run.best_cells) r.path.push_back(grid.cellAt(index));
   if (options.record_pheromone && colony.pheromone.cellCount() > 0)
     r.pheromone = strongestPheromoneByGridCell(colony.pheromone, colony.region);

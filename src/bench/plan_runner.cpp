@@ -38,8 +38,8 @@ RunRecord recordFrom(const eaci::PlanResult& result, const eaci::Parameters& par
   run.lost_ants_total = result.lost_ants_total;
   run.stopped_early = result.stopped_early;
   run.interrupted = result.interrupted;
-  run.best_length_so_far = result.best_length_so_far;
-  run.iteration_best_length = result.iteration_best_length;
+  run.best_length_so_far = result.best_cost_so_far;
+  run.iteration_best_length = result.iteration_best_cost;
   run.lost_ants_per_iteration = result.lost_ants_per_iteration;
   run.path = result.path;
   run.smoothed_path = result.smoothed_path;

@@ -86,8 +86,11 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["lost_ants_total"] = r.lost_ants_total;
   j["ants_per_iteration"] = r.ants_per_iteration;
   j["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
-  j["best_length_per_iteration"] = finiteOrNull(r.iteration_best_length);
-  j["best_length_so_far"] = finiteOrNull(r.best_length_so_far);
+  j["best_cost_per_iteration"] = finiteOrNull(r.iteration_best_cost);
+  j["best_cost_so_far"] = finiteOrNull(r.best_cost_so_far);
+  // The names before the cost model, the same values, until the next release.
+  j["best_length_per_iteration"] = j["best_cost_per_iteration"];
+  j["best_length_so_far"] = j["best_cost_so_far"];
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
   j["islands"] = r.islands;

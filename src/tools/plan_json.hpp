@@ -32,8 +32,9 @@ struct PlanContext {
 // The report: success, error (only when failed), status, algorithm, length, cost, length_m,
 // min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
 // iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
-// ants_per_iteration, lost_ants_per_iteration, best_length_per_iteration, best_length_so_far (null where
-// infinite), total_turn_deg, islands (S, islands, E), time_ms, seed, map, unknown, start, goal,
+// ants_per_iteration, lost_ants_per_iteration, best_cost_per_iteration, best_cost_so_far (null where
+// infinite; the same again as best_length_per_iteration and best_length_so_far, their names until
+// the next release), total_turn_deg, islands (S, islands, E), time_ms, seed, map, unknown, start, goal,
 // (requested_goal, only when --tolerance moved the goal), parameters, in this order.
 nlohmann::ordered_json planToJson(const PlanResult& result, const PlanContext& context);
 

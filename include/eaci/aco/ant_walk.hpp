@@ -11,7 +11,7 @@
 #include "eaci/aco/ant_route.hpp"
 #include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/heuristic.hpp"
-#include "eaci/aco/leg_distance_field.hpp"
+#include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
 #include "eaci/aco/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
@@ -88,59 +88,60 @@ struct WalkSetup {
   std::vector<Cell> waypoints;                // L_1 = S, ..., L_N = E
   std::vector<std::int32_t> waypoint_of_cell;  // per region cell: its index in `waypoints`, or -1
   // d_jg of the heuristic: empty -> Euclidean distance to the leg's goal (the paper);
-  // else leg_distance[z] is the route cost to waypoint z (geodesic islands).
-  std::vector<LegDistanceField> leg_distance;
+  // else leg_cost[z] is the route cost to waypoint z (geodesic islands).
+  std::vector<LegCostField> leg_cost;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   InversePower eta_power{7.0};                // x -> x^-beta
   // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
-  // d_jg tabulated per waypoint over the region (filled by tabulateDistances() when it fits):
-  // one load per candidate instead of a computation.
-  std::vector<std::vector<float>> distance_table;
-  static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
-  // Leg distances are tabulated only up to this many entries per region cell (64 bytes, under
+  // d_jg (costToWaypoint) tabulated per waypoint over the region (filled by
+  // tabulateCostsToWaypoints() when it fits): one load per candidate instead of a computation.
+  std::vector<std::vector<float>> cost_to_waypoint_table;
+  static constexpr std::size_t kMaxCostTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
+  // Leg costs are tabulated only up to this many entries per region cell (64 bytes, under
   // half the pheromone's): a table of region cells x islands grows with the square of the
   // route's length, and memory and set-up should grow with the route.
   static constexpr std::size_t kMaxLegTableEntriesPerCell = 16;
 
   // Ants on the whole map.
   WalkSetup(const CostGrid& g, const PheromoneField& field, std::vector<Cell> points, HeuristicRule rule,
-            double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
+            double beta, double epsilon, std::vector<LegCostField> leg_costs = {})
       : WalkSetup(g, ColonyRegion::wholeMap(g), field, std::move(points), rule, beta, epsilon,
-                  std::move(leg_distances)) {}
+                  std::move(leg_costs)) {}
 
   // Ants on `cells` (which must hold every waypoint; `field` is indexed by its cells).
   WalkSetup(const CostGrid& g, ColonyRegion cells, const PheromoneField& field, std::vector<Cell> points,
-            HeuristicRule rule, double beta, double epsilon, std::vector<LegDistanceField> leg_distances = {})
+            HeuristicRule rule, double beta, double epsilon, std::vector<LegCostField> leg_costs = {})
       : grid(&g), pheromone(&field), region(std::move(cells)), waypoints(std::move(points)),
-        waypoint_of_cell(region.size(), -1), leg_distance(std::move(leg_distances)), heuristic(rule),
+        waypoint_of_cell(region.size(), -1), leg_cost(std::move(leg_costs)), heuristic(rule),
         eta_power(beta) {
     for (std::size_t w = 0; w < waypoints.size(); ++w)
       waypoint_of_cell[region.regionIndex(waypoints[w])] = static_cast<std::int32_t>(w);
     if (rule == HeuristicRule::kTurningAware)
       for (int from = 0; from < kDirections; ++from)
         for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] = turningCost(from, to, epsilon);
-    tabulateDistances();
+    tabulateCostsToWaypoints();
   }
 
-  // d_jg: distance from `next` to waypoint `target`.
-  double distanceToWaypoint(Cell next, std::size_t target) const {
-    if (!leg_distance.empty()) return leg_distance[target].at(next);
+  // d_jg: what reaching waypoint `target` from `next` costs: the leg's exact route cost
+  // (geodesic islands), else the straight-line distance (the paper's; a lower bound of it).
+  double costToWaypoint(Cell next, std::size_t target) const {
+    if (!leg_cost.empty()) return leg_cost[target].at(next);
     const Cell goal = waypoints[target];
     return std::hypot(next.row - goal.row, next.col - goal.col);
   }
 
-  // Fills distance_table once the waypoints and leg distances are set, if it fits.
-  void tabulateDistances() {
-    distance_table.clear();
+  // Fills cost_to_waypoint_table once the waypoints and leg costs are set, if it fits.
+  void tabulateCostsToWaypoints() {
+    cost_to_waypoint_table.clear();
     const std::size_t entries = region.size() * (waypoints.size() - 1);
-    if (entries > kMaxDistanceTableEntries) return;
-    if (!leg_distance.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
-    distance_table.resize(waypoints.size());
+    if (entries > kMaxCostTableEntries) return;
+    if (!leg_cost.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
+    cost_to_waypoint_table.resize(waypoints.size());
     for (std::size_t z = 1; z < waypoints.size(); ++z) {
-      distance_table[z].resize(region.size());
+      cost_to_waypoint_table[z].resize(region.size());
       for (std::uint32_t r = 0; r < region.size(); ++r)
-        distance_table[z][r] = static_cast<float>(distanceToWaypoint(grid->cellAt(region.gridIndex(r)), z));
+        cost_to_waypoint_table[z][r] = static_cast<float>(costToWaypoint(grid->cellAt(region.gridIndex(r)), z));
     }
   }
 
@@ -153,8 +154,9 @@ struct WalkSetup {
   double heuristicDistance(Cell from, std::uint32_t next, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
     const Cell to = step(from, dir);
-    double distance = distance_table.empty() ? distanceToWaypoint(to, target) : distance_table[target][next];
-    if (!leg_distance.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
+    double distance =
+        cost_to_waypoint_table.empty() ? costToWaypoint(to, target) : cost_to_waypoint_table[target][next];
+    if (!leg_cost.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
     return distance + sigma;
   }
 

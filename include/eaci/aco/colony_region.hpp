@@ -129,7 +129,6 @@ class ColonyRegion {
 
   std::size_t size() const { return size_; }            // region cells
   std::size_t gridCellCount() const { return grid_cells_; }
-  bool isWholeMap() const { return whole_map_; }
   // aroundRoute refused it: it would have held more than its max_cells (the region is empty).
   bool tooLarge() const { return too_large_; }
 
@@ -146,7 +145,6 @@ class ColonyRegion {
     if (whole_map_) return static_cast<std::uint32_t>(static_cast<std::size_t>(c.row) * static_cast<std::size_t>(grid_width_) + static_cast<std::size_t>(c.col));
     return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
   }
-  bool contains(std::size_t grid_index) const { return regionIndex(grid_index) != kNone; }
 
   // The moves out of region cell r that stay in the region: bit d for direction d.
   std::uint8_t moves(std::uint32_t r) const { return moves_[r]; }

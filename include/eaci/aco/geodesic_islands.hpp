@@ -5,40 +5,13 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <vector>
 
 #include "eaci/aco/islands.hpp"
-#include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/cell.hpp"
+#include "eaci/grid/moves.hpp"
 
 namespace eaci {
-
-// The cheapest route from `start` down the cost field of the goal (`cost_to_goal`,
-// costField(grid, goal)): each step goes to the neighbour that keeps move cost + its cost equal
-// to the current cost; ties to the lowest direction. On a binary map, a shortest route.
-// Empty when the start cannot reach the goal.
-inline CellPath descendCostField(const CostGrid& grid, const std::vector<double>& cost_to_goal, Cell start) {
-  CellPath route;
-  if (!grid.isFree(start) || !std::isfinite(cost_to_goal[grid.index(start)])) return route;
-  route.push_back(start);
-  Cell current = start;
-  while (cost_to_goal[grid.index(current)] > 0.0) {
-    int best_dir = -1;
-    double best = std::numeric_limits<double>::infinity();
-    for (int d = 0; d < kDirections; ++d) {
-      if (!grid.canMove(current, d)) continue;
-      const double through = grid.moveCost(current, d) + cost_to_goal[grid.index(step(current, d))];
-      if (through < best - 1e-9) {
-        best = through;
-        best_dir = d;
-      }
-    }
-    current = step(current, best_dir);  // a finite cost always has a descending neighbour
-    route.push_back(current);
-  }
-  return route;
-}
 
 // Islands on the cheapest route (`shortest_route`, e.g. A*'s): after S, the first cell of the route at least r_s
 // (Eq. 13) further along it that the auxiliary map leaves free, and so on; E is the last
@@ -48,8 +21,8 @@ inline CellPath descendCostField(const CostGrid& grid, const std::vector<double>
 // guide them (1/d^beta barely differs between neighbours when d is large).
 // `free_on_auxiliary(cell)` says whether the auxiliary map leaves a route cell free.
 template <class FreeOnAuxiliary>
-std::vector<Cell> geodesicIslandsWhere(const FreeOnAuxiliary& free_on_auxiliary, const CellPath& shortest_route,
-                                       Cell start, Cell goal, int island_count, double max_spacing = 0.0) {
+std::vector<Cell> geodesicIslands(const FreeOnAuxiliary& free_on_auxiliary, const CellPath& shortest_route,
+                                  Cell start, Cell goal, int island_count, double max_spacing = 0.0) {
   std::vector<Cell> islands{start};
   if (start == goal || shortest_route.size() < 2) {
     if (!(start == goal)) islands.push_back(goal);
@@ -59,7 +32,7 @@ std::vector<Cell> geodesicIslandsWhere(const FreeOnAuxiliary& free_on_auxiliary,
   if (max_spacing > 0) spacing = std::min(spacing, max_spacing);
   std::vector<double> along(shortest_route.size(), 0.0);  // route length from S to each cell
   for (std::size_t k = 1; k < shortest_route.size(); ++k)
-    along[k] = along[k - 1] + stepLength(directionBetween(shortest_route[k - 1], shortest_route[k]));
+    along[k] = along[k - 1] + stepLengthBetween(shortest_route[k - 1], shortest_route[k]);
   const double total = along.back();
   double last = 0.0;
   for (std::size_t k = 1; k + 1 < shortest_route.size(); ++k) {
@@ -70,13 +43,6 @@ std::vector<Cell> geodesicIslandsWhere(const FreeOnAuxiliary& free_on_auxiliary,
   }
   islands.push_back(goal);
   return islands;
-}
-
-// The same with the auxiliary map at hand.
-inline std::vector<Cell> geodesicIslands(const CostGrid& auxiliary, const CellPath& shortest_route, Cell start,
-                                         Cell goal, int island_count, double max_spacing = 0.0) {
-  return geodesicIslandsWhere([&](Cell c) { return auxiliary.isFree(c); }, shortest_route, start, goal, island_count,
-                              max_spacing);
 }
 
 }  // namespace eaci

@@ -70,9 +70,10 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyR
       if (stop != nullptr && stop->tick(static_cast<std::size_t>(c1 - c0 + 1))) return reuse;
       for (int c = c0; c <= c1; ++c) {
         const Cell from{r, c};
+        const unsigned moves = grid.movesFrom(from);
         for (int d = 0; d < kDirections; ++d) {
           const Cell to = step(from, d);
-          if (!in_region(to) || !grid.canMove(from, d)) continue;
+          if (!in_region(to) || (moves & (1u << d)) == 0) continue;
           const double value =
               regionEdgePheromone(line, cellCentre(from, grid.height()), cellCentre(to, grid.height()));
           if (std::isfinite(value)) {
@@ -106,12 +107,6 @@ inline PheromoneField initialIslandPheromone(const CostGrid& grid, const ColonyR
   }
   field.refreshChanged();
   return field;
-}
-
-// The same over the whole map.
-inline PheromoneField initialIslandPheromone(const CostGrid& grid, const std::vector<Cell>& islands, double lambda,
-                                             double alpha) {
-  return initialIslandPheromone(grid, ColonyRegion::wholeMap(grid), islands, lambda, alpha);
 }
 
 }  // namespace eaci

@@ -32,7 +32,7 @@ struct ColonyResult {
 
 struct IslandPlan {
   std::vector<Cell> islands;                   // L_1 = S, ..., L_N = E
-  std::vector<LegDistanceField> leg_distance;  // empty: the paper's straight-line d_jg
+  std::vector<LegCostField> leg_cost;  // empty: the paper's straight-line d_jg
   CellPath route;                              // geodesic: the cheapest route S .. E the islands are on
   double route_cost = std::numeric_limits<double>::infinity();  // its cost (CostGrid::moveCost)
 };
@@ -73,9 +73,9 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
     plan.route_cost = shortest.cost;
   }
   if (plan.route.empty()) return plan;
-  plan.islands = geodesicIslandsWhere([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route,
-                                      start, goal, params.islands, params.island_spacing_max);
-  plan.leg_distance = legDistanceFields(grid, plan.route, plan.islands, stop);
+  plan.islands = geodesicIslands([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route, start,
+                                 goal, params.islands, params.island_spacing_max);
+  plan.leg_cost = legCostFields(grid, plan.route, plan.islands, stop);
   return plan;
 }
 
@@ -140,7 +140,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
     return result;
   }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
-                  params.beta, params.epsilon, std::move(islands.leg_distance));
+                  params.beta, params.epsilon, std::move(islands.leg_cost));
   if (observer) observer(0, result.pheromone, setup.region);
   Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), islands.route_cost,
                 colony_workspace);

@@ -9,12 +9,8 @@
 
 namespace eaci {
 
-// Eq. 1-2: serial number g in 1..W*H, left to right, top to bottom.
-inline std::int64_t serialNumber(Cell c, int width) {
-  return static_cast<std::int64_t>(c.row) * width + c.col + 1;
-}
-
-// Inverse of Eq. 1-2: row = ceil(g / W) - 1, column = g - (row)*W - 1 (both 0-based).
+// Eq. 1-2 read backwards: the cell of serial number g in 1..W*H (numbered left to right, top to
+// bottom): row = ceil(g / W) - 1, column = g - (row)*W - 1 (both 0-based).
 inline Cell cellFromSerial(std::int64_t g, int width) {
   const std::int64_t row = (g - 1) / width;
   return Cell{static_cast<int>(row), static_cast<int>(g - 1 - row * width)};

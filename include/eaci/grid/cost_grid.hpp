@@ -44,17 +44,6 @@ struct CostRule {
   double cost_factor = 3.0;
 };
 
-// The moves the rule allows (bit d: direction d, as CostGrid::canMove) given which neighbours
-// are free (bit d: the neighbour in direction d). Without corner cutting a diagonal also needs
-// the two straight neighbours beside it, directions d - 1 and d + 1.
-inline unsigned allowedMoves(unsigned free_neighbours, bool allow_corner_cutting) {
-  if (allow_corner_cutting) return free_neighbours;
-  const unsigned straight = free_neighbours & 0x55u;
-  const unsigned from_before = ((straight << 1) | (straight >> 7)) & 0xFFu;  // bit d - 1 moved to d
-  const unsigned from_after = ((straight >> 1) | (straight << 7)) & 0xFFu;   // bit d + 1 moved to d
-  return straight | (free_neighbours & 0xAAu & from_before & from_after);
-}
-
 class CostGrid {
  public:
   static constexpr std::uint8_t kObstacle = 255;  // the cell byte of an obstacle; others are costs
@@ -143,17 +132,8 @@ class CostGrid {
     cell_factor_ = factor;
   }
 
-  // The move rule: the target must be free; a diagonal move that would pass
-  // between two cells sharing the corner also needs both of them free unless
-  // corner cutting is allowed (the paper's benchmark rule).
-  bool canMove(Cell from, int dir) const {
-    const Cell to = step(from, dir);
-    if (!isFree(to)) return false;
-    if (!isDiagonal(dir) || allow_corner_cutting_) return true;
-    return isFree(Cell{from.row + kDirRow[dir], from.col}) && isFree(Cell{from.row, from.col + kDirCol[dir]});
-  }
-
-  // Bit d: canMove(from, d), for all eight directions at once (no bounds checks off the border).
+  // The moves out of `from` the move rule (allowedMoves) allows on this grid: bit d for
+  // direction d (no bounds checks off the border).
   unsigned movesFrom(Cell from) const {
     unsigned free_neighbours = 0;
     if (from.row > 0 && from.col > 0 && from.row + 1 < height_ && from.col + 1 < width_) {
@@ -165,6 +145,8 @@ class CostGrid {
     }
     return allowedMoves(free_neighbours, allow_corner_cutting_);
   }
+  // The same for one move.
+  bool canMove(Cell from, int dir) const { return ((movesFrom(from) >> dir) & 1u) != 0; }
 
   // The cost of an allowed move from `from` in direction `dir`: its length, weighted by the
   // cost of the cell it enters (CostRule). Never less than the move's length.

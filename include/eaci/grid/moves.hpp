@@ -1,7 +1,10 @@
-// The eight moves of the grid model and their lengths (straight 1, diagonal sqrt 2).
+// The eight moves of the grid model and their lengths (straight 1, diagonal sqrt 2), and a
+// route's length.
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <cstddef>
 #include <cstdlib>
 
 #include "eaci/grid/cell.hpp"
@@ -28,6 +31,35 @@ inline int directionBetween(Cell a, Cell b) {
     if (kDirRow[d] == dr && kDirCol[d] == dc) return d;
   }
   return -1;
+}
+
+// The length in cells of the step a -> b: 1 or sqrt 2 between 8-neighbours, else (a jump no
+// planner returns) the straight line between the cell centres.
+inline double stepLengthBetween(Cell a, Cell b) {
+  const int dir = directionBetween(a, b);
+  if (dir >= 0) return stepLength(dir);
+  return std::hypot(static_cast<double>(b.col - a.col), static_cast<double>(b.row - a.row));
+}
+
+// A route's length in cells: the sum of its steps' lengths (stepLengthBetween), 0 for one cell.
+inline double pathLength(const CellPath& path) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k) length += stepLengthBetween(path[k - 1], path[k]);
+  return length;
+}
+
+// The move rule. A move needs a free target cell; without corner cutting a diagonal move also
+// needs both cells beside it free (the two straight neighbours that share its corner), with
+// corner cutting (the paper's benchmark rule) it does not. Given which neighbours of a cell
+// are free (bit d: the neighbour in direction d), the moves it allows (bit d: direction d);
+// CostGrid::movesFrom and canMove ask it. The diagonal d sits between the straight directions
+// d - 1 and d + 1.
+inline unsigned allowedMoves(unsigned free_neighbours, bool allow_corner_cutting) {
+  if (allow_corner_cutting) return free_neighbours;
+  const unsigned straight = free_neighbours & 0x55u;
+  const unsigned from_before = ((straight << 1) | (straight >> 7)) & 0xFFu;  // bit d - 1 moved to d
+  const unsigned from_after = ((straight >> 1) | (straight << 7)) & 0xFFu;   // bit d + 1 moved to d
+  return straight | (free_neighbours & 0xAAu & from_before & from_after);
 }
 
 // Number of 45-degree steps between two move directions: 0 (straight on) .. 4 (reversal).

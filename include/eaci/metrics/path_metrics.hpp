@@ -1,5 +1,5 @@
-// Path metrics: the paper's route length and total corner angle, and a route's clearance
-// from obstacles and mean cell cost.
+// Path metrics: the paper's total corner angle, and a route's clearance from obstacles and
+// mean cell cost. Its length (Tables 1-3) is pathLength, grid/moves.hpp.
 #pragma once
 
 #include <Eigen/Core>
@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/distance_transform.hpp"
 #include "eaci/grid/moves.hpp"
 
 namespace eaci {
@@ -19,22 +21,6 @@ namespace eaci {
 // The move from cell a to cell b as a vector in cell units: x columns right, y rows down.
 inline Eigen::Vector2d moveVector(Cell a, Cell b) {
   return {static_cast<double>(b.col - a.col), static_cast<double>(b.row - a.row)};
-}
-
-// Length in cells: straight step 1, diagonal sqrt 2 (a jump between cells that are not
-// neighbours, which no planner returns, counts its straight-line length).
-inline double pathLength(const CellPath& path) {
-  double length = 0.0;
-  for (std::size_t k = 1; k < path.size(); ++k) {
-    const int dir = directionBetween(path[k - 1], path[k]);
-    if (dir >= 0) {
-      length += stepLength(dir);
-    } else {
-      const Eigen::Vector2d move = moveVector(path[k - 1], path[k]);
-      length += std::hypot(move.x(), move.y());
-    }
-  }
-  return length;
 }
 
 // Sum of the turning angles at the path's inner cells, degrees (multiples of 45 on an
@@ -59,76 +45,16 @@ inline double totalTurnDegrees(const CellPath& path) {
 // clearance sqrt 2, a cell two columns beside a wall 2, a blocked route cell 0. Cells beyond the
 // map's border are not obstacles (the map says nothing about them). +infinity when the route
 // is empty or the grid has no obstacle; route cells off the grid are skipped.
-//
-// Exact Euclidean distances in O(width x height), however far the obstacles are (a search
-// outward from each route cell costs the square of the clearance per cell): per column the
-// distance to the nearest obstacle in that column, then, on the rows the route visits, the
-// lower envelope of the parabolas (x - q)^2 + column_distance(q)^2 (Felzenszwalb and
-// Huttenlocher, "Distance Transforms of Sampled Functions", 2012).
+// Exact Euclidean distances in O(width x height) (squaredDistancesToSources,
+// grid/distance_transform.hpp), however far the obstacles are.
 inline double minClearance(const CostGrid& grid, const CellPath& route) {
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  const int w = grid.width(), h = grid.height();
-  std::vector<bool> route_row(static_cast<std::size_t>(std::max(h, 0)), false);
+  std::vector<std::uint8_t> obstacle(grid.cellCount());
+  const std::uint8_t* cells = grid.cellBytes();
+  for (std::size_t i = 0; i < obstacle.size(); ++i) obstacle[i] = cells[i] == CostGrid::kObstacle ? 1 : 0;
+  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacle);
+  double best = std::numeric_limits<double>::infinity();
   for (const Cell& cell : route)
-    if (grid.contains(cell)) route_row[static_cast<std::size_t>(cell.row)] = true;
-
-  // Squared distance to the nearest obstacle in the same column, +infinity if none.
-  std::vector<double> column(grid.cellCount(), kInfinity);
-  auto at = [w](int row, int col) {
-    return static_cast<std::size_t>(row) * static_cast<std::size_t>(w) + static_cast<std::size_t>(col);
-  };
-  auto square = [](int v) { return static_cast<double>(v) * static_cast<double>(v); };
-  for (int c = 0; c < w; ++c) {
-    double distance = kInfinity;
-    for (int r = 0; r < h; ++r) {
-      distance = grid.isBlocked(Cell{r, c}) ? 0.0 : distance + 1.0;
-      column[at(r, c)] = distance;
-    }
-    distance = kInfinity;
-    for (int r = h - 1; r >= 0; --r) {
-      distance = grid.isBlocked(Cell{r, c}) ? 0.0 : distance + 1.0;
-      column[at(r, c)] = std::min(column[at(r, c)], distance);
-    }
-    for (int r = 0; r < h; ++r) column[at(r, c)] *= column[at(r, c)];
-  }
-
-  // Per route row: squared distance to the nearest obstacle anywhere, from the lower envelope
-  // of the parabolas of the columns that have an obstacle.
-  std::vector<double> squared(static_cast<std::size_t>(std::max(w, 0)));
-  std::vector<int> apex(static_cast<std::size_t>(std::max(w, 0)));           // envelope parabolas' columns
-  std::vector<double> from(static_cast<std::size_t>(std::max(w, 0)) + 1);   // where each takes over
-  double best = kInfinity;
-  for (int r = 0; r < h; ++r) {
-    if (!route_row[static_cast<std::size_t>(r)]) continue;
-    const double* f = &column[at(r, 0)];
-    int k = -1;
-    for (int q = 0; q < w; ++q) {
-      if (!std::isfinite(f[q])) continue;
-      double s = -kInfinity;
-      while (k >= 0) {
-        const int p = apex[static_cast<std::size_t>(k)];
-        s = ((f[q] + square(q)) - (f[p] + square(p))) / (2.0 * (q - p));
-        if (s <= from[static_cast<std::size_t>(k)]) --k;
-        else break;
-      }
-      if (k < 0) s = -kInfinity;
-      ++k;
-      apex[static_cast<std::size_t>(k)] = q;
-      from[static_cast<std::size_t>(k)] = s;
-      from[static_cast<std::size_t>(k) + 1] = kInfinity;
-    }
-    for (int x = 0, j = 0; x < w; ++x) {
-      if (k < 0) {
-        squared[static_cast<std::size_t>(x)] = kInfinity;
-        continue;
-      }
-      while (from[static_cast<std::size_t>(j) + 1] < x) ++j;
-      const int q = apex[static_cast<std::size_t>(j)];
-      squared[static_cast<std::size_t>(x)] = square(x - q) + f[q];
-    }
-    for (const Cell& cell : route)
-      if (cell.row == r && grid.contains(cell)) best = std::min(best, squared[static_cast<std::size_t>(cell.col)]);
-  }
+    if (grid.contains(cell)) best = std::min(best, squared[grid.index(cell)]);
   return std::sqrt(best);
 }
 

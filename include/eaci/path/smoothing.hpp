@@ -52,36 +52,38 @@ void traverseSegment(Cell from, Cell to, Visit&& visit) {
   }
 }
 
-// The cost of driving the straight segment: each cell's length inside it, weighted like a move
-// into that cell (CostGrid::moveCostInto per unit length); +infinity if it touches an obstacle
-// or leaves the map.
-inline double segmentCost(const CostGrid& grid, Cell from, Cell to) {
+// What driving a straight segment between two cell centres costs, from one walk along it.
+struct SegmentCost {
+  // Each cell's length inside the segment, weighted like a move into that cell
+  // (CostGrid::moveCostInto per unit length); +infinity if it touches an obstacle or leaves the map.
   double cost = 0.0;
+  // The highest cell cost (CostGrid::cost) among the cells it passes through or touches at a
+  // corner; 255 if it touches an obstacle or leaves the map.
+  int peak = 0;
+};
+
+// The segment's cost and peak. The walk ends early once the cost so far is above `cost_bound`
+// or the peak above `peak_bound` (each then already above its bound, as the whole segment's
+// would be: costs only add up); the defaults walk the whole segment.
+inline SegmentCost segmentCostAndPeak(const CostGrid& grid, Cell from, Cell to,
+                                      double cost_bound = std::numeric_limits<double>::infinity(),
+                                      int peak_bound = 255) {
+  SegmentCost segment;
   traverseSegment(from, to, [&](Cell c, double length) {
     if (!grid.isFree(c)) {
-      cost = std::numeric_limits<double>::infinity();
+      segment.cost = std::numeric_limits<double>::infinity();
+      segment.peak = 255;
       return false;
     }
-    cost += length * grid.moveCostInto(grid.index(c), 0);  // direction 0: a straight move, length 1
-    return true;
+    segment.cost += length * grid.moveCostInto(grid.index(c), 0);  // direction 0: a straight move, length 1
+    segment.peak = std::max<int>(segment.peak, grid.cost(c));
+    return segment.cost <= cost_bound && segment.peak <= peak_bound;
   });
-  return cost;
+  return segment;
 }
 
-// The highest cell cost (CostGrid::cost) among the cells the straight segment passes through or
-// touches at a corner; 255 if it touches an obstacle or leaves the map.
-inline int segmentPeakCost(const CostGrid& grid, Cell from, Cell to) {
-  int peak = 0;
-  traverseSegment(from, to, [&](Cell c, double) {
-    if (!grid.isFree(c)) {
-      peak = 255;
-      return false;
-    }
-    peak = std::max<int>(peak, grid.cost(c));
-    return true;
-  });
-  return peak;
-}
+// The segment's cost alone (SegmentCost::cost).
+inline double segmentCost(const CostGrid& grid, Cell from, Cell to) { return segmentCostAndPeak(grid, from, to).cost; }
 
 // Where a straight segment between two cell centres crosses each cell: the middle of its
 // stretch inside every cell after `from` that it passes through (cells it only touches at a
@@ -111,9 +113,9 @@ inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
 // by an allowed shortcut (the search stops at the first that is not). Returns the kept cells,
 // start and goal included; consecutive kept cells are joined by straight segments.
 // A route that is not 8-connected is returned as it is. The work is up to quadratic in the
-// route's length (each shortcut tried is walked cell by cell): `stop` is ticked by the cells
-// each try walks, and once it says stop the route is smoothed up to where it got and goes on
-// cell by cell from there (as valid as the whole smoothed route).
+// route's length (each shortcut tried is walked cell by cell, once, until it fails): `stop` is
+// ticked by the cells each try spans, and once it says stop the route is smoothed up to where
+// it got and goes on cell by cell from there (as valid as the whole smoothed route).
 inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPoll* stop = nullptr) {
   if (route.size() < 3 || !std::isfinite(routeCost(grid, route))) return route;
   const auto moveCost = [&](std::size_t k) {  // the move into route[k]
@@ -127,14 +129,15 @@ inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPol
     double stretch_cost = moveCost(i + 1);
     int stretch_peak = std::max<int>(grid.cost(route[i]), grid.cost(route[i + 1]));
     for (std::size_t j = i + 2; j < route.size(); ++j) {
-      if (stop != nullptr && stop->tick(2 * (j - i))) {  // two walks of about j - i cells
+      if (stop != nullptr && stop->tick(j - i)) {  // a walk of about j - i cells
         kept.insert(kept.end(), route.begin() + static_cast<std::ptrdiff_t>(i) + 1, route.end());
         return kept;
       }
       stretch_cost += moveCost(j);
       stretch_peak = std::max<int>(stretch_peak, grid.cost(route[j]));
-      if (segmentCost(grid, route[i], route[j]) > stretch_cost + 1e-9) break;
-      if (segmentPeakCost(grid, route[i], route[j]) > stretch_peak) break;
+      const double cost_bound = stretch_cost + 1e-9;
+      const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, stretch_peak);
+      if (shortcut.cost > cost_bound || shortcut.peak > stretch_peak) break;
       best = j;
     }
     kept.push_back(route[best]);

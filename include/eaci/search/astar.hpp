@@ -1,6 +1,6 @@
-// Exact cheapest routes on the same grid, move rule and move costs as the ants: A* and a
-// Dijkstra cost field, both the one grid search (grid_search.hpp). A* is the reference for a
-// route's cost; on a binary map the cost is the length.
+// Exact cheapest routes on the same grid, move rule and move costs as the ants: A*, the one
+// grid search (grid_search.hpp). A* is the reference for a route's cost; on a binary map the
+// cost is the length.
 #pragma once
 
 #include <limits>
@@ -47,15 +47,6 @@ inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, Gr
 inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal) {
   GridSearchWorkspace workspace;
   return shortestPath(grid, start, goal, workspace);
-}
-
-// Dijkstra: the cost of a cheapest route from every cell (index order of the grid) to
-// `target`, +infinity where unreachable; on a binary map, the grid distance (cells).
-inline std::vector<double> costField(const CostGrid& grid, Cell target) {
-  GridSearchRequest request;
-  request.source = target;
-  request.reverse_costs = true;
-  return searchGrid(grid, request).distance;
 }
 
 }  // namespace eaci

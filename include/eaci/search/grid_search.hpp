@@ -1,6 +1,6 @@
 // One search over the grid's moves, behind every exact search of the project: A*
-// (shortestPath), the Dijkstra cost field (costField), the island leg fields
-// (LegDistanceField) and reachability (reachableFrom). What differs between them is a
+// (shortestPath), the island leg fields (LegCostField) and reachability
+// (reachableFrom). What differs between them is a
 // parameter: a target to stop at (and steer towards), a window to stay in, whether to keep
 // the moves for the route back, and whether distances matter at all.
 //

@@ -17,7 +17,7 @@ namespace eaci {
 // margin). Cells the window does not reach read as the Euclidean distance (never more than the
 // cost), raised to at least one more than the largest cost inside the window, so they never
 // look better.
-class LegDistanceField {
+class LegCostField {
  public:
   // The window reaches this many cells beyond the leg, or half the leg's length if more. With
   // islands 2 cells apart one cell is enough: an ant further off than that heads back anyway
@@ -25,12 +25,12 @@ class LegDistanceField {
   // instead of ~120 with 4 (512 maze: EACI/A* time 4.3x -> 2.9x at 512-1024 cells, same routes).
   static constexpr int kMinWindowMargin = 1;
 
-  LegDistanceField() = default;
+  LegCostField() = default;
 
   // `leg` is the part of the cheapest route from the previous island to `target`.
   // `scratch`: the search's open list, shared by the fields of one plan (null: its own).
   // `stop`: ticked once per cell of the search (a stopped field is partial; its caller drops it).
-  LegDistanceField(const CostGrid& grid, const CellPath& leg, Cell target, GridSearchScratch* scratch = nullptr,
+  LegCostField(const CostGrid& grid, const CellPath& leg, Cell target, GridSearchScratch* scratch = nullptr,
                    StopPoll* stop = nullptr)
       : target_(target) {
     CellPath extent = leg;
@@ -59,9 +59,9 @@ class LegDistanceField {
 // One field per island after S (index = the island's index), read by the ant walk. Stopped by
 // `stop` (every few thousand cells of their searches): the fields made so far, the rest empty;
 // the caller reads stop->stopped() and drops them.
-inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, const CellPath& shortest_route,
+inline std::vector<LegCostField> legCostFields(const CostGrid& grid, const CellPath& shortest_route,
                                                        const std::vector<Cell>& islands, StopPoll* stop = nullptr) {
-  std::vector<LegDistanceField> fields(islands.size());
+  std::vector<LegCostField> fields(islands.size());
   GridSearchScratch scratch;
   std::size_t from = 0;
   for (std::size_t z = 1; z < islands.size(); ++z) {
@@ -69,7 +69,7 @@ inline std::vector<LegDistanceField> legDistanceFields(const CostGrid& grid, con
     while (to < shortest_route.size() && !(shortest_route[to] == islands[z])) ++to;
     const CellPath leg(shortest_route.begin() + static_cast<std::ptrdiff_t>(from),
                        shortest_route.begin() + static_cast<std::ptrdiff_t>(std::min(to + 1, shortest_route.size())));
-    fields[z] = LegDistanceField(grid, leg, islands[z], &scratch, stop);
+    fields[z] = LegCostField(grid, leg, islands[z], &scratch, stop);
     if (stop != nullptr && stop->stopped()) break;
     from = to;
   }
