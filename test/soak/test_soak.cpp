@@ -60,7 +60,7 @@ void planRandomly(const eaci::CostGrid& grid, int plans, eaci::SplitMix64& rng, 
     params.island_strategy = pick == 2 ? eaci::IslandStrategy::kPaper : eaci::IslandStrategy::kGeodesic;
     params.seed = rng.next();
     const auto r = eaci::plan(grid, start, goal, algorithm, params);
-    const bool reachable = eaci::shortestPath(grid, start, goal).found;
+    const bool reachable = eaci::cheapestPath(grid, start, goal).found;
     ++tally.plans;
     if (r.success()) {
       ++tally.routes;

@@ -96,8 +96,8 @@ struct WalkSetup {
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
   // d_jg tabulated per waypoint over the region (filled by tabulateDistances() when it fits):
   // one load per candidate instead of a computation.
-  std::vector<std::vector<float>> distance_table;
-  static constexpr std::size_t kMaxDistanceTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
+  std::vector<std::vector<float>> cost_table;
+  static constexpr std::size_t kMaxCostTableEntries = std::size_t{1} << 22;  // 16 MiB of floats
   // Leg distances are tabulated only up to this many entries per region cell (64 bytes, under
   // half the pheromone's): a table of region cells x islands grows with the square of the
   // route's length, and memory and set-up should grow with the route.
@@ -130,17 +130,17 @@ struct WalkSetup {
     return std::hypot(next.row - goal.row, next.col - goal.col);
   }
 
-  // Fills distance_table once the waypoints and leg distances are set, if it fits.
+  // Fills cost_table once the waypoints and leg distances are set, if it fits.
   void tabulateDistances() {
-    distance_table.clear();
+    cost_table.clear();
     const std::size_t entries = region.size() * (waypoints.size() - 1);
-    if (entries > kMaxDistanceTableEntries) return;
+    if (entries > kMaxCostTableEntries) return;
     if (!leg_distance.empty() && entries > kMaxLegTableEntriesPerCell * region.size()) return;
-    distance_table.resize(waypoints.size());
+    cost_table.resize(waypoints.size());
     for (std::size_t z = 1; z < waypoints.size(); ++z) {
-      distance_table[z].resize(region.size());
+      cost_table[z].resize(region.size());
       for (std::uint32_t r = 0; r < region.size(); ++r)
-        distance_table[z][r] = static_cast<float>(distanceToWaypoint(grid->cellAt(region.gridIndex(r)), z));
+        cost_table[z][r] = static_cast<float>(distanceToWaypoint(grid->cellAt(region.gridIndex(r)), z));
     }
   }
 
@@ -153,7 +153,7 @@ struct WalkSetup {
   double heuristicDistance(Cell from, std::uint32_t next, std::size_t target, int previous_dir, int dir) const {
     const double sigma = turning_cost[previous_dir + 1][dir];
     const Cell to = step(from, dir);
-    double distance = distance_table.empty() ? distanceToWaypoint(to, target) : distance_table[target][next];
+    double distance = cost_table.empty() ? distanceToWaypoint(to, target) : cost_table[target][next];
     if (!leg_distance.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
     return distance + sigma;
   }

@@ -13,28 +13,13 @@
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/moves.hpp"
+#include "eaci/grid/path_length.hpp"
 
 namespace eaci {
 
 // The move from cell a to cell b as a vector in cell units: x columns right, y rows down.
 inline Eigen::Vector2d moveVector(Cell a, Cell b) {
   return {static_cast<double>(b.col - a.col), static_cast<double>(b.row - a.row)};
-}
-
-// Length in cells: straight step 1, diagonal sqrt 2 (a jump between cells that are not
-// neighbours, which no planner returns, counts its straight-line length).
-inline double pathLength(const CellPath& path) {
-  double length = 0.0;
-  for (std::size_t k = 1; k < path.size(); ++k) {
-    const int dir = directionBetween(path[k - 1], path[k]);
-    if (dir >= 0) {
-      length += stepLength(dir);
-    } else {
-      const Eigen::Vector2d move = moveVector(path[k - 1], path[k]);
-      length += std::hypot(move.x(), move.y());
-    }
-  }
-  return length;
 }
 
 // Sum of the turning angles at the path's inner cells, degrees (multiples of 45 on an
