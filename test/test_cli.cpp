@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>  // header-only
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/io/map_io.hpp"
 #include "test_support.hpp"
 

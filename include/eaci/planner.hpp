@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/aco/pheromone_picture.hpp"
 #include "eaci/aco/solvers.hpp"
 #include "eaci/grid/cost_grid.hpp"

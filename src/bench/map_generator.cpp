@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/astar.hpp"
 #include "maze.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/planner.hpp"
 #include "test_support.hpp"

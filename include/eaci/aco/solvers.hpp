@@ -54,7 +54,7 @@ constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
 // `stop`: ticked by every step's loops (auxiliary map, flood, island scan, the search, the leg
 // fields); once it says stop the plan is unfinished (the caller reads stop->stopped()): a
 // geodesic plan keeps its route when the search had finished.
-inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                               GridSearchWorkspace* astar = nullptr, MeetingSearch* meeting = nullptr,
                               StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kPaper) {
@@ -86,7 +86,7 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
 // many moves of the route (none, tooLarge(), beyond kMaxPheromoneCells); otherwise the whole
 // map (eaci::plan has checked its size). `reuse`: a region whose memory the new one takes
 // over. `stop`: as ColonyRegion's.
-inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params,
+inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const ColonyParameters& params,
                                  ColonyRegion reuse = {}, StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kGeodesic && params.region_margin > 0)
     return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin, std::move(reuse), kMaxPheromoneCells,
@@ -102,7 +102,7 @@ inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands
 // `astar_workspace`, `meeting_search`, `colony_workspace`: buffers and threads kept by the caller between plans
 // (null: this call's own). The result's region and pheromone field hold the colony
 // workspace's memory; a caller that keeps the workspace hands them back to it when done.
-inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
                               GridSearchWorkspace* astar_workspace = nullptr, MeetingSearch* meeting_search = nullptr,
                               ColonyWorkspace* colony_workspace = nullptr) {
@@ -154,7 +154,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
 // `colony_workspace` as for solveEaci.
-inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                                     const StopCheck& should_stop = {}, const IterationObserver& observer = {},
                                     ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
