@@ -11,7 +11,7 @@
 #include <string>
 #include <variant>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "fuzz_check.hpp"
 
 namespace {

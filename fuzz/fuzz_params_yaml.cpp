@@ -1,12 +1,12 @@
 // The CLI's --params FILE.yaml: a flat YAML mapping of parameter names to scalar values, read
-// by eaci::applyParameterYaml (src/io/parameter_file.cpp), the function eaci_plan calls. Every
+// by eaci::applyParameterYaml (src/planner/parameter_file.cpp), the function eaci_plan calls. Every
 // input must end in a ParameterFileError of one line that names the source, or in a parameter
 // set whose validation error (if any) is one line.
 #include <cstdint>
 #include <string>
 
-#include "eaci/aco/parameters.hpp"
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameters.hpp"
+#include "eaci/planner/parameter_file.hpp"
 #include "fuzz_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

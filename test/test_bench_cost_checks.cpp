@@ -119,7 +119,7 @@ TEST(BenchCostChecks, DijkstraAgreesWithAStarOnRandomCostMaps) {
     }
     b.bytes.front() = 0;
     b.bytes.back() = 0;
-    const eaci::ShortestPath a = eaci::shortestPath(planningGrid(b), {0, 0}, {12, 16});
+    const eaci::CheapestPath a = eaci::cheapestPath(planningGrid(b), {0, 0}, {12, 16});
     const double d = eaci_bench::dijkstraCost(b, {0, 0}, {12, 16});
     if (!a.found) {
       EXPECT_EQ(d, kInf) << "trial " << trial;

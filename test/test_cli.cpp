@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>  // header-only
 #include <stb_image.h>          // implementation in the linked libstb
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/io/map_io.hpp"
 #include "../src/tools/plan_image.hpp"
 #include "test_support.hpp"

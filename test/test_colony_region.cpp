@@ -162,7 +162,7 @@ TEST(ColonyRegion, EaciInANarrowRegionStillReachesTheAStarCost) {
   for (int r = 0; r < 34; ++r) rows[r][30] = 1;  // a wall open only at the bottom
   const CostGrid grid = CostGrid::fromRows(rows, false);
   const Cell start{1, 1}, goal{1, 58};
-  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  const double optimum = eaci::cheapestPath(grid, start, goal).cost;
   for (int margin : {2, 12}) {
     eaci::Parameters params;
     params.region_margin = margin;

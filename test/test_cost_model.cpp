@@ -136,7 +136,7 @@ TEST(CostModel, AStarGoesAroundACostlyCellOnlyWhenThatIsCheaper) {
     ByteMap map{3, 3, std::vector<std::uint8_t>(9, 0)};
     map.at(1, 1) = static_cast<std::uint8_t>(centre);
     const CostGrid grid = CostGrid::fromView(map.view(), false);
-    const auto astar = eaci::shortestPath(grid, Cell{1, 0}, Cell{1, 2});
+    const auto astar = eaci::cheapestPath(grid, Cell{1, 0}, Cell{1, 2});
     ASSERT_TRUE(astar.found);
     EXPECT_NEAR(astar.cost, expected_cost, 1e-12) << "centre cost " << centre;
     EXPECT_NEAR(astar.length, expected_length, 1e-12) << "centre cost " << centre;
@@ -164,8 +164,8 @@ TEST(CostModel, CostRuleComesFromTheParameters) {
 
 TEST(CostModel, UnknownCellsFollowAllowUnknown) {
   ByteMap map{3, 1, {0, kUnknown, 0}};
-  EXPECT_FALSE(eaci::shortestPath(CostGrid::fromView(map.view(false), false), Cell{0, 0}, Cell{0, 2}).found);
-  const auto through = eaci::shortestPath(CostGrid::fromView(map.view(true), false), Cell{0, 0}, Cell{0, 2});
+  EXPECT_FALSE(eaci::cheapestPath(CostGrid::fromView(map.view(false), false), Cell{0, 0}, Cell{0, 2}).found);
+  const auto through = eaci::cheapestPath(CostGrid::fromView(map.view(true), false), Cell{0, 0}, Cell{0, 2});
   ASSERT_TRUE(through.found);
   EXPECT_DOUBLE_EQ(through.cost, 2.0);
 }
@@ -183,7 +183,7 @@ TEST(CostModel, AStarCostEqualsAnIndependentWeightedDijkstra) {
       const Cell s{row(rng), col(rng)}, g{row(rng), col(rng)};
       if (map.at(s.row, s.col) >= 253 || map.at(g.row, g.col) >= 253) continue;
       const double reference = referenceCost(map, s, g, cutting);
-      const auto astar = eaci::shortestPath(grid, s, g);
+      const auto astar = eaci::cheapestPath(grid, s, g);
       ASSERT_EQ(astar.found, std::isfinite(reference)) << "seed " << seed;
       if (!astar.found) continue;
       ++compared;
@@ -202,7 +202,7 @@ TEST(CostModel, AStarCostEqualsAnIndependentWeightedDijkstra) {
 TEST(CostModel, AllCostsZeroGivesTheLengthOnThePaperMaps) {
   for (const auto& pc : eaci::test::paperCases()) {
     const CostGrid grid = eaci::test::paperMap(pc.file, true);
-    const auto astar = eaci::shortestPath(grid, pc.start, pc.goal);
+    const auto astar = eaci::cheapestPath(grid, pc.start, pc.goal);
     ASSERT_TRUE(astar.found);
     EXPECT_EQ(astar.cost, astar.length) << pc.file;
     EXPECT_NEAR(astar.cost, pc.optimum_cutting, 1e-4) << pc.file;

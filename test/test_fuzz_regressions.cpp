@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "../src/tools/cli_args.hpp"
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
 

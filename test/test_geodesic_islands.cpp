@@ -69,7 +69,7 @@ TEST(GeodesicIslands, RouteThroughTheIslandsIsTheOptimum) {
     ASSERT_GE(islands.size(), 3u);
     double through = 0.0;
     for (std::size_t k = 0; k + 1 < islands.size(); ++k)
-      through += eaci::shortestPath(grid, islands[k], islands[k + 1]).length;
+      through += eaci::cheapestPath(grid, islands[k], islands[k + 1]).length;
     EXPECT_NEAR(through, pc.optimum_cutting, 1e-4) << pc.file;
   }
 }
@@ -85,7 +85,7 @@ TEST(LegCostField, ExactInsideTheWindowAndNeverBetterOutside) {
   // The window is rows 0-10 (the leg's rows 2-6, margin 4), all columns: inside it the
   // values are the exact grid distances, around the wall too.
   for (Cell c : {Cell{6, 5}, Cell{9, 5}, Cell{2, 2}, Cell{10, 11}}) {
-    const double exact = eaci::shortestPath(grid, c, Cell{6, 9}).length;
+    const double exact = eaci::cheapestPath(grid, c, Cell{6, 9}).length;
     EXPECT_NEAR(field.at(c), exact, 1e-9) << c.row << "," << c.col;
   }
   // Row 11 is outside: it reads as at least one more than anything inside.

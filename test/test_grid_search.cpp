@@ -7,10 +7,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <functional>
 #include <future>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <queue>
 #include <string>
@@ -21,6 +23,9 @@
 #include <vector>
 
 #include "eaci/search/astar.hpp"
+#include "eaci/search/landmark_cache.hpp"
+#include "eaci/search/landmarks.hpp"
+#include "eaci/search/meeting_search.hpp"
 #include "test_support.hpp"
 
 using eaci::Cell;
@@ -29,6 +34,7 @@ using eaci::CostGrid;
 using eaci::GridSearchRequest;
 using eaci::GridSearchResult;
 using eaci::GridSearchWorkspace;
+using eaci::MeetingSearch;
 
 namespace {
 
@@ -71,7 +77,7 @@ double tolerance(double cost) { return 1e-9 * std::max(1.0, cost); }
 
 }  // namespace
 
-TEST(GridSearch, DistancesEqualAnIndependentDijkstraOnRandomCostMaps) {
+TEST(GridSearch, CostsEqualAnIndependentDijkstraOnRandomCostMaps) {
   GridSearchWorkspace workspace;  // one for every map: sizes grow and shrink
   int compared_routes = 0;
   for (std::uint32_t seed = 1; seed <= 60; ++seed) {
@@ -105,8 +111,7 @@ TEST(GridSearch, DistancesEqualAnIndependentDijkstraOnRandomCostMaps) {
           EXPECT_EQ(workspace.routeTo(c), route) << "seed " << seed;
         }
       }
-      EXPECT_NEAR(field.largest_distance, largest, tolerance(largest)) << "seed " << seed;
-      EXPECT_EQ(workspace.largestDistance(), field.largest_distance) << "seed " << seed;
+      EXPECT_NEAR(field.largest_cost, largest, tolerance(largest)) << "seed " << seed;
 
       // A* towards a target: the target's cost, and a route of that cost.
       const Cell target = randomCell(rng, grid);
@@ -131,7 +136,7 @@ TEST(GridSearch, DistancesEqualAnIndependentDijkstraOnRandomCostMaps) {
   EXPECT_GT(compared_routes, 60);
 }
 
-TEST(GridSearch, ShortestPathIsTheSameWithOrWithoutAWorkspace) {
+TEST(GridSearch, CheapestPathIsTheSameWithOrWithoutAWorkspace) {
   GridSearchWorkspace workspace;
   int found = 0;
   for (std::uint32_t seed = 100; seed < 140; ++seed) {
@@ -139,8 +144,8 @@ TEST(GridSearch, ShortestPathIsTheSameWithOrWithoutAWorkspace) {
     const CostGrid grid = randomGrid(rng, 2 + static_cast<int>(rng() % 60), 2 + static_cast<int>(rng() % 60));
     for (int k = 0; k < 5; ++k) {
       const Cell start = randomCell(rng, grid), goal = randomCell(rng, grid);
-      const eaci::ShortestPath fresh = eaci::shortestPath(grid, start, goal);
-      const eaci::ShortestPath reused = eaci::shortestPath(grid, start, goal, workspace);
+      const eaci::CheapestPath fresh = eaci::cheapestPath(grid, start, goal);
+      const eaci::CheapestPath reused = eaci::cheapestPath(grid, start, goal, workspace);
       ASSERT_EQ(reused.found, fresh.found) << "seed " << seed;
       EXPECT_EQ(reused.path, fresh.path) << "seed " << seed;
       if (!fresh.found) continue;
@@ -209,16 +214,16 @@ TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
 
 namespace {
 
-// Asks both workspaces (one thread, two) for the route that meets in the middle and checks it
+// Asks both searches (one thread, two) for the route that meets in the middle and checks it
 // against the independent Dijkstra: the same route and cost from both, the Dijkstra's cost, a
 // route of allowed moves that costs that much. Returns whether a route exists.
-bool expectMeetingRouteAsDijkstraSays(const CostGrid& grid, Cell source, Cell target, GridSearchWorkspace& one_thread,
-                                      GridSearchWorkspace& two_threads) {
+bool expectMeetingRouteAsDijkstraSays(const CostGrid& grid, Cell source, Cell target, MeetingSearch& one_thread,
+                                      MeetingSearch& two_threads) {
   const double expected =
       grid.isFree(target) ? referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)] : kInf;
   double cost = 0.0, cost_two = 0.0;
-  const eaci::CellPath route = one_thread.cheapestRouteBetween(grid, source, target, 1, &cost);
-  const eaci::CellPath route_two = two_threads.cheapestRouteBetween(grid, source, target, 2, &cost_two);
+  const eaci::CellPath route = one_thread.cheapestRoute(grid, source, target, 1, &cost);
+  const eaci::CellPath route_two = two_threads.cheapestRoute(grid, source, target, 2, &cost_two);
   EXPECT_EQ(route, route_two);
   EXPECT_EQ(cost, cost_two);
   if (std::isinf(expected)) {
@@ -238,7 +243,7 @@ bool expectMeetingRouteAsDijkstraSays(const CostGrid& grid, Cell source, Cell ta
 // independent Dijkstra, a route of allowed moves that costs that much, and the same route on
 // one thread and on two. Maps up to 45 x 45 take one round; the 200 x 200 ones many.
 TEST(GridSearch, RouteThatMeetsInTheMiddleCostsWhatAnIndependentDijkstraSays) {
-  GridSearchWorkspace one_thread, two_threads;
+  MeetingSearch one_thread, two_threads;
   int routes = 0;
   for (std::uint32_t seed = 1; seed <= 70; ++seed) {
     std::mt19937 rng(seed);
@@ -254,19 +259,17 @@ TEST(GridSearch, RouteThatMeetsInTheMiddleCostsWhatAnIndependentDijkstraSays) {
   EXPECT_GT(routes, 100);
 }
 
-// Its labels from the target share the workspace's 16-bit search numbers: after a wrap no old
-// label may join a route.
+// Its two sides' labels share one count of 16-bit search numbers: after a wrap no old label
+// may join a route.
 TEST(GridSearch, RouteThatMeetsInTheMiddleForgetsOldLabelsWhenTheNumbersWrap) {
   const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 1, 0}}, false);
-  GridSearchWorkspace workspace;
-  ASSERT_EQ(workspace.cheapestRouteBetween(grid, Cell{0, 0}, Cell{0, 2}).size(), 3u);
-  GridSearchRequest request;
-  request.source = Cell{0, 3};  // blocked: reaches nothing
-  for (int k = 0; k < 65535; ++k) workspace.search(grid, request);
+  MeetingSearch search;
+  ASSERT_EQ(search.cheapestRoute(grid, Cell{0, 0}, Cell{0, 2}).size(), 3u);
+  for (int k = 0; k < 65535; ++k) search.cheapestRoute(grid, Cell{0, 3}, Cell{0, 0});  // blocked: reaches nothing
   double cost = 0.0;
-  EXPECT_TRUE(workspace.cheapestRouteBetween(grid, Cell{0, 4}, Cell{0, 0}, 1, &cost).empty());
+  EXPECT_TRUE(search.cheapestRoute(grid, Cell{0, 4}, Cell{0, 0}, 1, &cost).empty());
   EXPECT_TRUE(std::isinf(cost));
-  EXPECT_EQ(workspace.cheapestRouteBetween(grid, Cell{0, 2}, Cell{0, 0}, 1, &cost).size(), 3u);
+  EXPECT_EQ(search.cheapestRoute(grid, Cell{0, 2}, Cell{0, 0}, 1, &cost).size(), 3u);
   EXPECT_DOUBLE_EQ(cost, 2.0);
 }
 
@@ -325,14 +328,14 @@ TEST(Landmarks, BoundsNeverExceedRouteCostsAndChangeByNoMoreThanAMoveCosts) {
       for (std::size_t i = 0; i < grid.cellCount(); ++i) {
         const Cell here = grid.cellAt(i);
         if (!grid.isFree(here)) continue;
-        const double bound = landmarks->lowerBound(i, t);
+        const double bound = landmarks->lowerBound(landmarks->of(i), landmarks->of(t));
         ++pairs;
         EXPECT_LE(bound, to_target[i] + tolerance(to_target[i]));
         EXPECT_LE(bound, from_target[i] + tolerance(from_target[i]));
         for (int d = 0; d < eaci::kDirections; ++d) {
           if (!grid.canMove(here, d)) continue;
           const std::size_t j = grid.index(eaci::step(here, d));
-          EXPECT_LE(bound - landmarks->lowerBound(j, t), grid.moveCost(here, d)) << "move " << d << " from cell " << i;
+          EXPECT_LE(bound - landmarks->lowerBound(landmarks->of(j), landmarks->of(t)), grid.moveCost(here, d)) << "move " << d << " from cell " << i;
         }
       }
     }
@@ -354,7 +357,8 @@ TEST(Landmarks, BoundAcrossAWallCountsTheDetour) {
   ASSERT_TRUE(landmarks);
   // (0,1) to (0,3): octile 2; the route goes down 5 cells, 2 along the foot of the wall (no
   // corner cutting past its end) and up 5: 12.
-  const double bound = landmarks->lowerBound(grid.index(Cell{0, 1}), grid.index(Cell{0, 3}));
+  const double bound =
+      landmarks->lowerBound(landmarks->of(grid.index(Cell{0, 1})), landmarks->of(grid.index(Cell{0, 3})));
   EXPECT_GT(bound, 3 * 2.0);
   EXPECT_LE(bound, 12.0);
 }
@@ -383,14 +387,56 @@ TEST(Landmarks, HoldOnCostlierGridsNotOnCheaperOnes) {
   EXPECT_FALSE(landmarks->holdsFor(CostGrid(20, 10, true)));
 }
 
+namespace {
+
+// Landmarks from `cache` that hold on `grid`, asked for as a plan asks (usableFor) until the
+// background thread has made them; null after two minutes.
+std::shared_ptr<const eaci::Landmarks> landmarksOnceMade(eaci::LandmarkCache& cache, const CostGrid& grid) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  for (;;) {
+    if (auto made = cache.usableFor(grid)) return made;
+    if (std::chrono::steady_clock::now() > deadline) return nullptr;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+// Starts a cache's threads (LandmarkCache's ThreadStarter) and counts the ones that finished,
+// so that a test can wait for the landmarks under way, made or failed.
+class FinishedThreads {
+ public:
+  eaci::ThreadStarter starter() {
+    return [this](std::function<void()> body) {
+      return std::thread([this, body = std::move(body)] {
+        body();
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++finished_;
+        finished_changed_.notify_all();
+      });
+    };
+  }
+  // Waits (two minutes at most) until `count` threads have finished; false if they did not.
+  bool waitFor(int count) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return finished_changed_.wait_for(lock, std::chrono::minutes(2), [&] { return finished_ >= count; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable finished_changed_;
+  int finished_ = 0;
+};
+
+}  // namespace
+
 // Kept in a cache: none at first (made in the background), then the same ones for a costlier
 // costmap, and new ones, holding for both, after a cell got cheaper.
 TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   CostGrid grid(30, 30, false);
   for (int r = 3; r < 27; ++r) grid.setCost(Cell{r, 15}, 200);
-  eaci::LandmarkCache cache(2);
+  FinishedThreads threads;  // outlives the cache, which joins its thread
+  eaci::LandmarkCache cache(2, {}, threads.starter());
   EXPECT_EQ(cache.usableFor(grid), nullptr);
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(1));
   const auto made = cache.usableFor(grid);
   ASSERT_NE(made, nullptr);
   EXPECT_EQ(made->count(), 2);
@@ -401,7 +447,7 @@ TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   cheaper.setCost(Cell{10, 15}, 0);
   cheaper.setBlocked(Cell{29, 29}, true);
   EXPECT_EQ(cache.usableFor(cheaper), nullptr);
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(2));
   const auto remade = cache.usableFor(cheaper);
   ASSERT_NE(remade, nullptr);
   EXPECT_NE(remade, made);
@@ -456,15 +502,19 @@ struct MakerProbe {
 TEST(Landmarks, CacheAsksForNoMoreThanFitAndSaysHowMany) {
   const CostGrid grid(300, 300, false);
   MakerProbe probe;
-  eaci::LandmarkCache cache(1000, [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
-    probe.calls.fetch_add(1);
-    probe.last_count.store(count);
-    return eaci::Landmarks::compute(g, 2, cancel);  // two suffice to see them used
-  });
+  FinishedThreads threads;
+  eaci::LandmarkCache cache(
+      1000,
+      [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+        probe.calls.fetch_add(1);
+        probe.last_count.store(count);
+        return eaci::Landmarks::compute(g, 2, cancel);  // two suffice to see them used
+      },
+      threads.starter());
   EXPECT_EQ(cache.count(), 1000);
   EXPECT_EQ(cache.usableFor(grid), nullptr);
   EXPECT_EQ(cache.countInUse(), 745);  // 67108864 / 90000, as ThoseThatFitInTheCap
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(1));
   EXPECT_EQ(probe.last_count.load(), 745);
   EXPECT_NE(cache.usableFor(grid), nullptr);
   EXPECT_EQ(cache.lastError(), "");
@@ -472,22 +522,25 @@ TEST(Landmarks, CacheAsksForNoMoreThanFitAndSaysHowMany) {
   const CostGrid too_big(8193, 8192, false);
   EXPECT_EQ(cache.usableFor(too_big), nullptr);
   EXPECT_EQ(cache.countInUse(), 0);
-  cache.wait();
-  EXPECT_EQ(probe.calls.load(), 1);
+  EXPECT_EQ(probe.calls.load(), 1);  // no thread was started for it
 }
 
 TEST(Landmarks, FailureWhileMakingThemLeavesTheCacheWithoutThemAndTheNextPlanTriesAgain) {
   const CostGrid grid(64, 64, false);
   MakerProbe probe;
-  eaci::LandmarkCache cache(4, [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
-    if (probe.calls.fetch_add(1) == 0) throw std::bad_alloc();  // the first attempt runs out of memory
-    return eaci::Landmarks::compute(g, count, cancel);
-  });
+  FinishedThreads threads;
+  eaci::LandmarkCache cache(
+      4,
+      [&](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+        if (probe.calls.fetch_add(1) == 0) throw std::bad_alloc();  // the first attempt runs out of memory
+        return eaci::Landmarks::compute(g, count, cancel);
+      },
+      threads.starter());
   EXPECT_EQ(cache.usableFor(grid), nullptr);  // starts the thread, which throws: no std::terminate
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(1));
   EXPECT_NE(cache.lastError().find("bad_alloc"), std::string::npos) << cache.lastError();
   EXPECT_EQ(cache.usableFor(grid), nullptr);  // tries again
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(2));
   EXPECT_EQ(probe.calls.load(), 2);
   EXPECT_EQ(cache.lastError(), "");
   const auto made = cache.usableFor(grid);
@@ -498,15 +551,16 @@ TEST(Landmarks, FailureWhileMakingThemLeavesTheCacheWithoutThemAndTheNextPlanTri
 TEST(Landmarks, ThreadThatCannotStartLeavesTheCacheUsableAndTheSearchGoesOnWithoutThem) {
   const CostGrid grid(64, 64, false);
   std::atomic<int> starts{0};
-  eaci::LandmarkCache cache(4, {}, [&](std::function<void()> body) {
+  FinishedThreads threads;
+  eaci::LandmarkCache cache(4, {}, [&, start = threads.starter()](std::function<void()> body) {
     if (starts.fetch_add(1) == 0)
       throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again), "no thread");
-    return std::thread(std::move(body));
+    return start(std::move(body));
   });
   EXPECT_EQ(cache.usableFor(grid), nullptr);  // no exception out of it
   EXPECT_NE(cache.lastError().find("could not start"), std::string::npos) << cache.lastError();
   EXPECT_EQ(cache.usableFor(grid), nullptr);  // not stuck "under way": starts the thread now
-  cache.wait();
+  ASSERT_TRUE(threads.waitFor(1));
   EXPECT_NE(cache.usableFor(grid), nullptr);
   EXPECT_EQ(starts.load(), 2);
 }
@@ -518,17 +572,15 @@ TEST(Landmarks, RouteThatMeetsInTheMiddleWithLandmarksCostsWhatAnIndependentDijk
   for (std::uint32_t seed = 1; seed <= 8; ++seed) {
     std::mt19937 rng(seed);
     const CostGrid grid = randomGrid(rng, 60 + static_cast<int>(rng() % 140), 60 + static_cast<int>(rng() % 140));
-    GridSearchWorkspace one_thread, two_threads;
+    MeetingSearch one_thread, two_threads;
     one_thread.useLandmarks(4);
     two_threads.useLandmarks(4);
-    one_thread.cheapestRouteBetween(grid, Cell{0, 0}, Cell{0, 0});  // a free or blocked corner: starts them or not
+    one_thread.cheapestRoute(grid, Cell{0, 0}, Cell{0, 0});  // a free or blocked corner: starts them or not
     for (int k = 0; k < 12; ++k) {
       const Cell source = randomCell(rng, grid), target = randomCell(rng, grid);
       if (!grid.isFree(source) || !grid.isFree(target)) continue;
-      for (GridSearchWorkspace* w : {&one_thread, &two_threads}) {
-        w->cheapestRouteBetween(grid, source, source);  // makes the landmarks if not under way
-        w->landmarkCache()->wait();
-      }
+      for (MeetingSearch* search : {&one_thread, &two_threads})  // their landmarks made before the search
+        ASSERT_NE(landmarksOnceMade(*search->landmarkCache(), grid), nullptr);
       SCOPED_TRACE("seed " + std::to_string(seed) + ", request " + std::to_string(k));
       if (expectMeetingRouteAsDijkstraSays(grid, source, target, one_thread, two_threads)) ++routes;
     }
@@ -542,13 +594,12 @@ TEST(Landmarks, SearchAcrossAWallTakesFewerCellsWithThem) {
   CostGrid grid(100, 100, false);
   for (int r = 0; r < 95; ++r) grid.setBlocked(Cell{r, 50}, true);
   const Cell source{5, 45}, target{5, 55};
-  GridSearchWorkspace plain, with_landmarks;
+  MeetingSearch plain, with_landmarks;
   with_landmarks.useLandmarks(4);
-  with_landmarks.cheapestRouteBetween(grid, source, source);
-  with_landmarks.landmarkCache()->wait();
+  ASSERT_NE(landmarksOnceMade(*with_landmarks.landmarkCache(), grid), nullptr);
   double cost = 0.0, cost_with = 0.0;
-  plain.cheapestRouteBetween(grid, source, target, 1, &cost);
-  with_landmarks.cheapestRouteBetween(grid, source, target, 1, &cost_with);
+  plain.cheapestRoute(grid, source, target, 1, &cost);
+  with_landmarks.cheapestRoute(grid, source, target, 1, &cost_with);
   const double expected = referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)];
   EXPECT_NEAR(cost, expected, tolerance(expected));
   EXPECT_NEAR(cost_with, expected, tolerance(expected));

@@ -5,7 +5,7 @@
 
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/aco/islands.hpp"
-#include "eaci/grid/reachability.hpp"
+#include "eaci/search/reachability.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
@@ -107,7 +107,7 @@ TEST(Islands, PaperFortyMapGivesThePapersLength) {
     }
     double through = 0.0;
     for (std::size_t k = 0; k + 1 < islands.size(); ++k)
-      through += eaci::shortestPath(grid, islands[k], islands[k + 1]).length;
+      through += eaci::cheapestPath(grid, islands[k], islands[k + 1]).length;
     EXPECT_NEAR(through, 59.2548, 1e-4) << "N = " << n;
   }
 }

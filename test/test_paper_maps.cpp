@@ -20,7 +20,7 @@ namespace {
 double shortestRouteThrough(const CostGrid& grid, const std::vector<Cell>& islands) {
   double total = 0.0;
   for (std::size_t k = 0; k + 1 < islands.size(); ++k) {
-    const auto leg = eaci::shortestPath(grid, islands[k], islands[k + 1]);
+    const auto leg = eaci::cheapestPath(grid, islands[k], islands[k + 1]);
     if (!leg.found) return std::numeric_limits<double>::infinity();
     total += leg.length;
   }

@@ -1,11 +1,11 @@
-// Parameter files (eaci/io/parameter_file.hpp): the CLI's --params reading, as one core function.
+// Parameter files (eaci/planner/parameter_file.hpp): the CLI's --params reading, as one core function.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <string>
 
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameter_file.hpp"
 
 namespace eaci {
 namespace {

@@ -5,7 +5,7 @@
 #include <map>
 #include <limits>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 
 TEST(Parameters, DefaultsAreThePapers) {
   const eaci::Parameters p;

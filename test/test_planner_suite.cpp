@@ -62,7 +62,7 @@ TEST_P(PlannerSuite, FindsAValidRouteBetweenFreeCells) {
     ASSERT_EQ(r.status, PlanStatus::kSuccess) << r.error;
     EXPECT_EQ(eaci::test::routeDefect(grid, r.path, pair[0], pair[1]), "");
     EXPECT_NEAR(r.length, eaci::test::countedLength(r.path), 1e-9);
-    const double optimum = eaci::shortestPath(grid, pair[0], pair[1]).length;
+    const double optimum = eaci::cheapestPath(grid, pair[0], pair[1]).length;
     EXPECT_GE(r.length, optimum - 1e-9);
   }
 }
@@ -217,7 +217,7 @@ TEST(PlannerDeterminism, LargeMapSameResultOnAnyThreadCount) {
   const auto one = eaci::plan(grid, start, goal, Algorithm::kEaci, p);
   ASSERT_TRUE(one.success()) << one.error;
   EXPECT_EQ(eaci::test::routeDefect(grid, one.path, start, goal), "");
-  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  const double optimum = eaci::cheapestPath(grid, start, goal).cost;
   EXPECT_GE(one.cost, optimum - 1e-9);
   EXPECT_LE(one.cost, 1.03 * optimum);
   for (int threads : {2, 0}) {
@@ -317,7 +317,7 @@ TEST(PlannerLimits, StopCheckDuringSetUpGivesTheSearchRouteWithGeodesicIslands) 
   EXPECT_TRUE(r.interrupted);
   EXPECT_TRUE(r.route_from_search);
   EXPECT_EQ(r.iterations_run, 0);
-  EXPECT_NEAR(r.cost, eaci::shortestPath(grid, Cell{0, 0}, Cell{19, 19}).cost, 1e-9);
+  EXPECT_NEAR(r.cost, eaci::cheapestPath(grid, Cell{0, 0}, Cell{19, 19}).cost, 1e-9);
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{19, 19}), "");
 }
 
@@ -361,7 +361,7 @@ TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
 TEST(PlannerLimits, StopGapEndsTheRunOnceTheRouteIsAsCheapAsAStars) {
   const CostGrid grid = eaci::test::paperMap("paper-30x30.txt", true);
   const Cell start{29, 0}, goal{0, 29};
-  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  const double optimum = eaci::cheapestPath(grid, start, goal).cost;
   eaci::Parameters p;
   p.allow_corner_cutting = true;
   p.early_stop_iterations = 1000;  // never by stagnation within max_iterations
@@ -408,7 +408,7 @@ TEST(PlannerLimits, StopGapAcceptsARouteWithinTheGapOnACostMap) {
     for (int c = 0; c < 40; ++c) grid.setCost(Cell{r, c}, static_cast<std::uint8_t>(std::max(0, 200 - 25 * std::abs(c - 20))));
   for (int r = 0; r < 34; ++r) grid.setBlocked(Cell{r, 20}, true);
   const Cell start{2, 2}, goal{2, 37};
-  const double optimum = eaci::shortestPath(grid, start, goal).cost;
+  const double optimum = eaci::cheapestPath(grid, start, goal).cost;
   eaci::Parameters p;
   p.early_stop_iterations = 1000;
   p.stop_gap = 0.05;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/aco/pheromone_picture.hpp"
 #include "eaci/aco/solvers.hpp"
 #include "eaci/grid/cost_grid.hpp"
@@ -16,6 +16,8 @@
 #include "eaci/metrics/path_metrics.hpp"
 #include "eaci/path/smoothing.hpp"
 #include "eaci/search/astar.hpp"
+#include "eaci/search/meeting_search.hpp"
+#include "eaci/search/reachability.hpp"
 
 namespace eaci {
 
@@ -55,7 +57,8 @@ enum class PlanStatus {
 // reuses the memory of its region and pheromone field. One plan at a time per workspace; it
 // keeps the largest buffers a plan has needed (destroy it to give the memory back).
 struct PlannerWorkspace {
-  GridSearchWorkspace search;
+  GridSearchWorkspace astar;    // A*, and the route of geodesic islands on smaller maps
+  MeetingSearch meeting;        // the route of geodesic islands from kTwoSidedSearchCells on, and its landmarks
   ColonyWorkspace colony;
 };
 
@@ -205,11 +208,11 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   StopPoll poll(options.should_stop, 0);  // this thread's: A*, the flood, smoothing
   if (algorithm == Algorithm::kAStar) {
     GridSearchWorkspace own_workspace;
-    GridSearchWorkspace& workspace = options.workspace ? options.workspace->search : own_workspace;
-    const ShortestPath shortest = shortestPath(grid, start, goal, workspace, &poll);
-    r.path = shortest.path;
+    GridSearchWorkspace& workspace = options.workspace ? options.workspace->astar : own_workspace;
+    const CheapestPath cheapest = cheapestPath(grid, start, goal, workspace, &poll);
+    r.path = cheapest.path;
     r.islands = {start, goal};
-    r.interrupted = shortest.stopped;
+    r.interrupted = cheapest.stopped;
   } else {
     const auto unreachable = [&] {
       return failure(algorithm, PlanStatus::kNoPath,
@@ -227,11 +230,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
       }
       if (!reachable) return unreachable();
     }
-    GridSearchWorkspace* search_workspace = options.workspace ? &options.workspace->search : nullptr;
+    GridSearchWorkspace* astar_workspace = options.workspace ? &options.workspace->astar : nullptr;
+    MeetingSearch* meeting_search = options.workspace ? &options.workspace->meeting : nullptr;
     ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
     ColonyResult colony = algorithm == Algorithm::kEaci
                               ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
-                                          search_workspace, colony_workspace)
+                                          astar_workspace, meeting_search, colony_workspace)
                               : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer,
                                                 colony_workspace);
     if (colony.goal_unreachable) return unreachable();

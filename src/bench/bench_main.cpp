@@ -15,7 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameter_file.hpp"
 
 #include "costs.hpp"
 #include "deadline.hpp"

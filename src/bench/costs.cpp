@@ -116,7 +116,7 @@ class CostsRunner {
         if (used.count(g.seed_used)) continue;
         prepare(prepared, g.map, options_.generated_inflation, 1.0);
         found = prepared.planning.isFree(g.start) && prepared.planning.isFree(g.goal) &&
-                eaci::shortestPath(prepared.planning, g.start, g.goal).found;
+                eaci::cheapestPath(prepared.planning, g.start, g.goal).found;
         if (!found) redrawn.push_back(g.seed_used);
       }
       if (!found) throw std::runtime_error("no connected inflated " + group.name + " map for seed " + std::to_string(k));

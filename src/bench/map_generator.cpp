@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/search/astar.hpp"
 #include "maze.hpp"
@@ -186,7 +186,7 @@ GeneratedMap generateMap(MapKind kind, int size, std::uint64_t seed, const Gener
     }
     g.obstacle_fraction = obstacleFraction(g.map);
     const eaci::CostGrid grid = eaci::CostGrid::fromView(g.map.view(), false);
-    const eaci::ShortestPath shortest = eaci::shortestPath(grid, g.start, g.goal);
+    const eaci::CheapestPath shortest = eaci::cheapestPath(grid, g.start, g.goal);
     if (!shortest.found) continue;
     g.optimum = shortest.length;
     return g;

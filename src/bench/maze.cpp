@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/io/occupancy_map.hpp"
 
 namespace eaci_bench {

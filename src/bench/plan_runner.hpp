@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/planner.hpp"
 #include "run_record.hpp"

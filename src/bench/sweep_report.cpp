@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "paper_maps.hpp"
 #include "parameter_symbols.hpp"
 #include "report_format.hpp"

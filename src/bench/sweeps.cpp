@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/io/text.hpp"
 #include "paper_tables.hpp"
 #include "progress.hpp"

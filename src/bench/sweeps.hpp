@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "paper_maps.hpp"
 #include "statistics.hpp"
 

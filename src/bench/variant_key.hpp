@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 
 namespace eaci_bench {
 

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/json_number.hpp"
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 
 namespace eaci::report {
 

@@ -16,8 +16,8 @@
 
 namespace eaci_ros {
 
-MapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
-  MapFrame f;
+TfMapFrame frameOf(const nav_msgs::OccupancyGrid& grid) {
+  TfMapFrame f;
   f.frame_id = grid.header.frame_id;
   f.origin = {grid.info.origin.position.x, grid.info.origin.position.y};
   f.origin_yaw = tf2::getYaw(grid.info.origin.orientation);
@@ -93,7 +93,7 @@ eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int h
   return eaci::GridView(costs.data(), width, height, eaci::RowOrder::kTopFirst, interpretation);
 }
 
-nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
+nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation) {
   nav_msgs::Path path;
   path.header.frame_id = frame.frame_id;
@@ -130,7 +130,7 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const 
   return path;
 }
 
-nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapFrame& frame, const ros::Time& stamp) {
+nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp) {
   nav_msgs::OccupancyGrid grid;
   grid.header.frame_id = frame.frame_id;
   grid.header.stamp = stamp;

@@ -19,14 +19,15 @@
 
 namespace eaci_ros {
 
-// Where a grid sits in the world (eaci::MapFrame: worldToCell, cellToWorld) and the TF frame it
-// sits in. Like costmap_2d and nav_msgs/OccupancyGrid, the origin is the corner of the cell in
-// the first buffer row (the bottom row) and first column, and its rotation is ignored.
-struct MapFrame : eaci::MapFrame {
+// Where a grid sits in the world (eaci::MapFrame: worldToCell, cellToWorld) and, added here,
+// the TF frame it sits in. Like costmap_2d and nav_msgs/OccupancyGrid, the origin is the corner
+// of the cell in the first buffer row (the bottom row) and first column, and its rotation is
+// ignored.
+struct TfMapFrame : eaci::MapFrame {
   std::string frame_id;
 };
 
-MapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
+TfMapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
 
 // A map loaded by the core (row 0 = top) as the message map_server would publish (bottom row first).
 // Throws std::invalid_argument for a map of costmap costs (mode: raw): its bytes are no occupancies.
@@ -56,11 +57,11 @@ eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int h
 // extra poses along long straight segments of a smoothed route), the goal pose (position and
 // orientation) last; headings as global_planner's orientation_mode sets them (default
 // forward: each pose faces the next one).
-nav_msgs::Path toPath(const eaci::CellPath& cells, const MapFrame& frame, const geometry_msgs::PoseStamped& start,
+nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp,
                       eaci::OrientationMode orientation = eaci::OrientationMode::kForward);
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
-nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const MapFrame& frame, const ros::Time& stamp);
+nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);
 
 }  // namespace eaci_ros

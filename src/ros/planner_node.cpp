@@ -94,7 +94,7 @@ class PlannerNode {
       map_.reset();
       return;
     }
-    const MapFrame frame = frameOf(map);
+    const TfMapFrame frame = frameOf(map);
     costmap->frame = frame;
     if (options.inflation_radius > 0) {
       eaci::InflationParameters inflation;

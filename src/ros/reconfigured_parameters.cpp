@@ -87,7 +87,7 @@ void storeInConfig(const eaci::Parameters& params, const RosPlannerOptions& opti
     } else if (description->type == "double") {
       dynamic_reconfigure::DoubleParameter p;
       p.name = name;
-      p.value = eaci::detail::parseDouble(name, text);
+      p.value = eaci::parseDouble(name, text);
       message.doubles.push_back(p);
     } else if (description->type == "bool") {
       dynamic_reconfigure::BoolParameter p;

@@ -19,8 +19,8 @@ void logLine(LogLevel level, const std::string& line) {
   }
 }
 
-MapFrame rosFrame(const PlanReply& reply) {
-  MapFrame frame;
+TfMapFrame rosFrame(const PlanReply& reply) {
+  TfMapFrame frame;
   static_cast<eaci::MapFrame&>(frame) = reply.frame;
   frame.frame_id = reply.frame_id;
   return frame;
@@ -97,7 +97,7 @@ bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStampe
   geometry_msgs::PoseStamped target = goal;
   target.pose.position.x = reply.goal.x();
   target.pose.position.y = reply.goal.y();
-  const MapFrame frame = rosFrame(reply);
+  const TfMapFrame frame = rosFrame(reply);
   const nav_msgs::Path path =
       toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode);
   plan = path.poses;

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameter_file.hpp"
 #include "eaci/io/map_server_writer.hpp"
 #include "eaci/io/text.hpp"
 

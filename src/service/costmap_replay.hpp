@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/planner.hpp"
 #include "costmap_snapshot.hpp"
 

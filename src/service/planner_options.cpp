@@ -60,23 +60,23 @@ void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const
     if (!eaci::parseAlgorithm(text, options.algorithm))
       throw eaci::ParameterError("algorithm must be eaci, aco or astar (got '" + text + "')");
   } else if (name == "default_tolerance") {
-    options.default_tolerance = eaci::detail::parseDouble(name, text);
+    options.default_tolerance = eaci::parseDouble(name, text);
   } else if (name == "occupied_threshold") {
-    options.occupied_threshold = eaci::detail::parseInt(name, text);
+    options.occupied_threshold = eaci::parseInt(name, text);
   } else if (name == "publish_plan") {
-    options.publish_plan = eaci::detail::parseBool(name, text);
+    options.publish_plan = eaci::parseBool(name, text);
   } else if (name == "max_planning_time") {
-    options.max_planning_time = eaci::detail::parseDouble(name, text);
+    options.max_planning_time = eaci::parseDouble(name, text);
   } else if (name == "visualize_pheromone") {
-    options.visualize_pheromone = eaci::detail::parseBool(name, text);
+    options.visualize_pheromone = eaci::parseBool(name, text);
   } else if (name == "robot_radius") {
-    options.robot_radius = eaci::detail::parseDouble(name, text);
+    options.robot_radius = eaci::parseDouble(name, text);
   } else if (name == "inflation_radius") {
-    options.inflation_radius = eaci::detail::parseDouble(name, text);
+    options.inflation_radius = eaci::parseDouble(name, text);
   } else if (name == "cost_scaling_factor") {
-    options.cost_scaling_factor = eaci::detail::parseDouble(name, text);
+    options.cost_scaling_factor = eaci::parseDouble(name, text);
   } else if (name == "landmarks") {
-    options.landmarks = eaci::detail::parseInt(name, text);
+    options.landmarks = eaci::parseInt(name, text);
   } else if (name == "orientation_mode") {
     try {
       options.orientation_mode = eaci::orientationModeFromString(text);

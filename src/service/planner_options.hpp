@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/path/orientation.hpp"
 #include "eaci/planner.hpp"
 

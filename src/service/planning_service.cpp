@@ -313,11 +313,11 @@ void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested
     say(LogLevel::kInfo, "the costmap moves with the robot (a rolling window): no landmarks on it, they would be made "
                          "again for every plan");
   }
-  workspace_->search.useLandmarks(rolling_ ? 0 : requested);
+  workspace_->meeting.useLandmarks(rolling_ ? 0 : requested);
 }
 
 void PlanningService::reportLandmarks(const eaci::MapFrame& frame) {
-  const eaci::LandmarkCache* cache = workspace_->search.landmarkCache();
+  const eaci::LandmarkCache* cache = workspace_->meeting.landmarkCache();
   if (cache == nullptr) return;
   const int in_use = cache->countInUse();
   if (in_use < cache->count() && in_use != landmarks_reported_)

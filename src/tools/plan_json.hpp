@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/grid/cell.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/planner.hpp"

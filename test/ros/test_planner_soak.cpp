@@ -109,7 +109,7 @@ TEST(PlannerSoak, AThousandRandomPlansAreValidAndTheNodeDoesNotGrow) {
     srv.request.start = pose(map, start, offset(rng), offset(rng));
     srv.request.goal = pose(map, goal, offset(rng), offset(rng));
     ASSERT_TRUE(client.call(srv)) << "call " << call << ": the service call itself failed";
-    const bool reachable = eaci::shortestPath(grid, start, goal).found;
+    const bool reachable = eaci::cheapestPath(grid, start, goal).found;
     const auto& poses = srv.response.plan.poses;
     if (!reachable) {
       ++unreachable;

@@ -15,7 +15,7 @@
 
 #include "costmap_replay.hpp"
 #include "eaci/io/map_io.hpp"
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameter_file.hpp"
 
 namespace {
 

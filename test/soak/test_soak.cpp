@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/planner.hpp"
 #include "test_support.hpp"
@@ -60,7 +60,7 @@ void planRandomly(const eaci::CostGrid& grid, int plans, eaci::SplitMix64& rng, 
     params.island_strategy = pick == 2 ? eaci::IslandStrategy::kPaper : eaci::IslandStrategy::kGeodesic;
     params.seed = rng.next();
     const auto r = eaci::plan(grid, start, goal, algorithm, params);
-    const bool reachable = eaci::shortestPath(grid, start, goal).found;
+    const bool reachable = eaci::cheapestPath(grid, start, goal).found;
     ++tally.plans;
     if (r.success()) {
       ++tally.routes;

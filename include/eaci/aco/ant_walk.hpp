@@ -13,7 +13,7 @@
 #include "eaci/aco/heuristic.hpp"
 #include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
 
 namespace eaci {

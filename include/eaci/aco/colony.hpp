@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "eaci/aco/ant_walk.hpp"
-#include "eaci/aco/parameters.hpp"
+#include "eaci/aco/colony_parameters.hpp"
 #include "eaci/aco/pheromone_update.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 #include "eaci/parallel/worker_group.hpp"
@@ -52,12 +52,12 @@ inline int resolveThreadCount(int requested) {
 }
 
 // The threads a colony may walk its ants on: params.threads (0 = all cores), at most one per ant.
-inline int colonyThreads(const Parameters& params) { return std::min(resolveThreadCount(params.threads), params.ants); }
+inline int colonyThreads(const ColonyParameters& params) { return std::min(resolveThreadCount(params.threads), params.ants); }
 // The threads it does walk them on: those, but one alone on a region of fewer than
 // kCellsForWorkers cells, whose walks are too short to pay for waking another thread (the
 // result is the same on any number).
 constexpr std::size_t kCellsForWorkers = 1024;
-inline int colonyWorkers(const Parameters& params, std::size_t region_cells) {
+inline int colonyWorkers(const ColonyParameters& params, std::size_t region_cells) {
   return region_cells < kCellsForWorkers ? 1 : colonyThreads(params);
 }
 
@@ -101,7 +101,7 @@ class Colony {
   // `cheapest_cost`: the cost of a cheapest route through the waypoints when known (geodesic
   // islands), for stop_gap; +infinity when not. `workspace`: routes, walkers and threads kept
   // by the caller between runs (null: the colony's own).
-  Colony(const WalkSetup& setup, PheromoneField& field, const Parameters& params, UpdateRule update, double d_se,
+  Colony(const WalkSetup& setup, PheromoneField& field, const ColonyParameters& params, UpdateRule update, double d_se,
          double cheapest_cost = std::numeric_limits<double>::infinity(), ColonyWorkspace* workspace = nullptr)
       : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
         good_enough_cost_(std::isfinite(cheapest_cost)
@@ -244,7 +244,7 @@ class Colony {
 
   const WalkSetup& setup_;
   PheromoneField& field_;
-  const Parameters& params_;
+  const ColonyParameters& params_;
   UpdateRule update_;
   double d_se_;
   double good_enough_cost_;  // stop_gap: a best route this cheap ends the run (early stopping on)

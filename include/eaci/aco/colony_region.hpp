@@ -16,7 +16,7 @@
 
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/parallel/stop_poll.hpp"
-#include "eaci/search/grid_search.hpp"
+#include "eaci/grid/cell_window.hpp"
 
 namespace eaci {
 

@@ -41,7 +41,7 @@ class LegCostField {
     request.stop = stop;
     request.window = CellWindow::around(grid, extent, std::max(kMinWindowMargin, static_cast<int>(leg.size()) / 2));
     field_ = scratch != nullptr ? searchGrid(grid, request, *scratch) : searchGrid(grid, request);
-    outside_ = field_.largest_distance + 1.0;
+    outside_ = field_.largest_cost + 1.0;
   }
 
   // Cost of the cheapest route from `c` to the island (cells on a binary map).

@@ -13,8 +13,9 @@
 #include "eaci/aco/geodesic_islands.hpp"
 #include "eaci/aco/initial_pheromone.hpp"
 #include "eaci/aco/islands.hpp"
-#include "eaci/grid/reachability.hpp"
+#include "eaci/search/reachability.hpp"
 #include "eaci/search/astar.hpp"
+#include "eaci/search/meeting_search.hpp"
 
 namespace eaci {
 
@@ -38,7 +39,7 @@ struct IslandPlan {
 };
 
 // Geodesic islands find their route with the search that meets in the middle
-// (GridSearchWorkspace::cheapestRouteBetween) on maps of at least this many cells (256 x 256):
+// (MeetingSearch::cheapestRoute) on maps of at least this many cells (256 x 256):
 // its two sides run at the same time with threads != 1, where one A* cannot use a second core.
 // On smaller maps one A* takes a millisecond or two, and the paper's maps keep the routes,
 // and so the tables, they had (of equally short routes the two searches may pick different ones).
@@ -48,12 +49,14 @@ constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
 // kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route
 // (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
 // they never build the auxiliary map.
-// `workspace`: the exact search's buffers, kept by the caller between plans (null: its own).
+// `astar`, `meeting`: the exact searches' buffers (A* on smaller maps, the search that meets
+// in the middle from kTwoSidedSearchCells on), kept by the caller between plans (null: their own).
 // `stop`: ticked by every step's loops (auxiliary map, flood, island scan, the search, the leg
 // fields); once it says stop the plan is unfinished (the caller reads stop->stopped()): a
 // geodesic plan keeps its route when the search had finished.
-inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
-                              GridSearchWorkspace* workspace = nullptr, StopPoll* stop = nullptr) {
+inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
+                              GridSearchWorkspace* astar = nullptr, MeetingSearch* meeting = nullptr,
+                              StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kPaper) {
     const CostGrid auxiliary = auxiliaryMap(grid, start, goal, AuxiliaryBorder::kFree, stop);
     if (stop != nullptr && stop->stopped()) return {};
@@ -62,15 +65,15 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
     return {paperIslands(auxiliary, reachable, start, goal, params.islands, stop), {}, {}};
   }
   IslandPlan plan;
-  GridSearchWorkspace own_workspace;
-  GridSearchWorkspace& search = workspace ? *workspace : own_workspace;
   if (grid.cellCount() >= kTwoSidedSearchCells) {
-    plan.route =
-        search.cheapestRouteBetween(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost, stop);
+    MeetingSearch own_search;
+    MeetingSearch& search = meeting ? *meeting : own_search;
+    plan.route = search.cheapestRoute(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost, stop);
   } else {
-    ShortestPath shortest = shortestPath(grid, start, goal, search, stop);
-    plan.route = std::move(shortest.path);
-    plan.route_cost = shortest.cost;
+    GridSearchWorkspace own_workspace;
+    CheapestPath cheapest = cheapestPath(grid, start, goal, astar ? *astar : own_workspace, stop);
+    plan.route = std::move(cheapest.path);
+    plan.route_cost = cheapest.cost;
   }
   if (plan.route.empty()) return plan;
   plan.islands = geodesicIslands([&](Cell c) { return freeOnAuxiliaryMap(grid, c, start, goal); }, plan.route, start,
@@ -83,7 +86,7 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
 // many moves of the route (none, tooLarge(), beyond kMaxPheromoneCells); otherwise the whole
 // map (eaci::plan has checked its size). `reuse`: a region whose memory the new one takes
 // over. `stop`: as ColonyRegion's.
-inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const Parameters& params,
+inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands, const ColonyParameters& params,
                                  ColonyRegion reuse = {}, StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kGeodesic && params.region_margin > 0)
     return ColonyRegion::aroundRoute(grid, islands.route, params.region_margin, std::move(reuse), kMaxPheromoneCells,
@@ -96,12 +99,12 @@ inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands
 // the set-up steps and every few thousand cells inside them (StopPoll); stopped there, the
 // result has no colony route and an empty pheromone field (geodesic islands: search_route is
 // the route when the search had finished).
-// `search_workspace`, `colony_workspace`: buffers and threads kept by the caller between plans
+// `astar_workspace`, `meeting_search`, `colony_workspace`: buffers and threads kept by the caller between plans
 // (null: this call's own). The result's region and pheromone field hold the colony
 // workspace's memory; a caller that keeps the workspace hands them back to it when done.
-inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
-                              GridSearchWorkspace* search_workspace = nullptr,
+                              GridSearchWorkspace* astar_workspace = nullptr, MeetingSearch* meeting_search = nullptr,
                               ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
   StopPoll setup_poll(should_stop, 0);  // one counter through all the set-up steps
@@ -109,7 +112,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
     if (setup_poll.stopped() || setup_poll.askNow()) result.run.interrupted = true;
     return result.run.interrupted;
   };
-  IslandPlan islands = planIslands(grid, start, goal, params, search_workspace, &setup_poll);
+  IslandPlan islands = planIslands(grid, start, goal, params, astar_workspace, meeting_search, &setup_poll);
   if (setup_poll.stopped()) {  // geodesic: the search's route if it had finished (else empty)
     result.run.interrupted = true;
     if (!islands.route.empty()) {
@@ -151,7 +154,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
 // `colony_workspace` as for solveEaci.
-inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const Parameters& params,
+inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                                     const StopCheck& should_stop = {}, const IterationObserver& observer = {},
                                     ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;

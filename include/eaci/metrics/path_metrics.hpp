@@ -15,6 +15,7 @@
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/distance_transform.hpp"
 #include "eaci/grid/moves.hpp"
+#include "eaci/grid/moves.hpp"
 
 namespace eaci {
 

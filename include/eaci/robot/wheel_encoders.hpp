@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "eaci/aco/random.hpp"
+#include "eaci/random.hpp"
 #include "eaci/robot/diff_drive.hpp"
 
 namespace eaci::robot {

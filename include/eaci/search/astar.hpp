@@ -7,11 +7,15 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/moves.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 #include "eaci/search/grid_search.hpp"
+#include "eaci/search/grid_search_workspace.hpp"
+#include "eaci/search/search_request.hpp"
 
 namespace eaci {
 
-struct ShortestPath {
+struct CheapestPath {
   bool found = false;
   double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost)
   double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
@@ -19,13 +23,14 @@ struct ShortestPath {
   bool stopped = false;  // ended by the stop check before the goal was settled (found = false)
 };
 
-// A* from start to goal: a cheapest route (on a binary map, a shortest one). Returns found = false when the goal is unreachable or either
-// cell is off the map or blocked. `workspace` keeps the search's buffers for the next call
-// (same answers with or without it). `stop`: ticked once per cell taken off the open list
-// (GridSearchRequest::stop); stopped, the result has found = false and stopped = true.
-inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, GridSearchWorkspace& workspace,
+// A* from start to goal: a cheapest route (on a binary map, a shortest one). Returns found =
+// false when the goal is unreachable or either cell is off the map or blocked. `workspace`
+// keeps the search's buffers for the next call (same answers with or without it). `stop`:
+// ticked once per cell taken off the open list (GridSearchRequest::stop); stopped, the result
+// has found = false and stopped = true.
+inline CheapestPath cheapestPath(const CostGrid& grid, Cell start, Cell goal, GridSearchWorkspace& workspace,
                                  StopPoll* stop = nullptr) {
-  ShortestPath result;
+  CheapestPath result;
   if (!grid.isFree(start) || !grid.isFree(goal)) return result;
   GridSearchRequest request;
   request.source = start;
@@ -38,15 +43,13 @@ inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal, Gr
   result.found = true;
   result.cost = workspace.at(goal);
   result.path = workspace.routeTo(goal);
-  result.length = 0.0;
-  for (std::size_t k = 1; k < result.path.size(); ++k)
-    result.length += stepLength(directionBetween(result.path[k - 1], result.path[k]));
+  result.length = pathLength(result.path);
   return result;
 }
 
-inline ShortestPath shortestPath(const CostGrid& grid, Cell start, Cell goal) {
+inline CheapestPath cheapestPath(const CostGrid& grid, Cell start, Cell goal) {
   GridSearchWorkspace workspace;
-  return shortestPath(grid, start, goal, workspace);
+  return cheapestPath(grid, start, goal, workspace);
 }
 
 }  // namespace eaci

@@ -1,4 +1,4 @@
-// Which cells can be reached from a cell under the grid's move rule.
+// Which cells can be reached from a cell under the grid's move rule: a flood by the grid search.
 #pragma once
 
 #include <cmath>
@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 #include "eaci/search/grid_search.hpp"
+#include "eaci/search/search_request.hpp"
 
 namespace eaci {
 
@@ -17,9 +19,9 @@ inline std::vector<std::uint8_t> reachableFrom(const CostGrid& grid, Cell from, 
   request.source = from;
   request.order = SearchOrder::kAnyOrder;
   request.stop = stop;
-  const std::vector<double> distance = searchGrid(grid, request).distance;
-  std::vector<std::uint8_t> reached(distance.size(), 0);
-  for (std::size_t i = 0; i < distance.size(); ++i) reached[i] = std::isfinite(distance[i]) ? 1 : 0;
+  const std::vector<double> cost = searchGrid(grid, request).cost;
+  std::vector<std::uint8_t> reached(cost.size(), 0);
+  for (std::size_t i = 0; i < cost.size(); ++i) reached[i] = std::isfinite(cost[i]) ? 1 : 0;
   return reached;
 }
 

@@ -1,5 +1,5 @@
-// Reproducible random numbers: one stream per (seed, iteration, ant), so a
-// run gives the same result whatever the number of threads the ants run on.
+// Reproducible random numbers (the ants, the simulated wheel encoders): one stream per (seed,
+// iteration, ant), so a run gives the same result whatever the number of threads the ants run on.
 #pragma once
 
 #include <cstdint>

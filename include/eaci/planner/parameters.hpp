@@ -1,5 +1,6 @@
-// All solver parameters in one place, with the paper's defaults (Section 5),
-// validated in one place, and settable by name (CLI --set, --params YAML, ROS).
+// The planner's parameters in one place, with the paper's defaults (Section 5), validated in
+// one place, and settable by name (CLI --set, --params YAML, ROS): the colony's settings
+// (aco/colony_parameters.hpp) and the planner's own (cost model, move rule, smoothing).
 #pragma once
 
 #include <cctype>
@@ -17,29 +18,14 @@
 #include <variant>
 #include <vector>
 
+#include "eaci/aco/colony_parameters.hpp"
+#include "eaci/planner/parameter_text.hpp"
+
 namespace eaci {
 
-enum class IslandStrategy {
-  kGeodesic,  // on a shortest route, r_s apart, legs guided by exact grid distance (beyond the paper)
-  kPaper,     // Eq. 13-15 on the auxiliary map, as the paper defines them
-};
-
-struct Parameters {
-  int ants = 50;                 // m
-  int max_iterations = 100;      // Nc_max
-  double alpha = 1.1;            // pheromone weight (Eq. 8)
-  double beta = 7.0;             // heuristic weight (Eq. 8)
-  double q = 100.0;              // pheromone deposit constant Q (Eq. 11, 24)
-  double kappa = 0.9;            // adaptive evaporation coefficient (Eq. 25)
-  int islands = 9;               // N, islands including S and E (Eq. 13)
-  double lambda = 3.0;           // pheromone expansion coefficient (Eq. 21)
-  double epsilon = 0.5;          // angle coefficient of the turning cost (Eq. 17)
-  // Classic ACO evaporation rate (Eq. 10) and uniform initial pheromone; the paper gives
-  // neither. tau0 = 800 with Q = 100 is the common MATLAB ACO code's tau0 = 8 with Q = 1 and,
-  // with rho = 0.1, puts the baseline's iterations and lost ants within a factor 2 of the
-  // paper's ACO row on all four maps (docs/benchmarks.md, `eaci_bench sweep`).
-  double aco_rho = 0.1;
-  double aco_tau0 = 800.0;
+// The planner's configuration: the colony's settings, and the cost model, move rule and
+// smoothing of every planner (A* included).
+struct Parameters : ColonyParameters {
   bool allow_corner_cutting = false;  // diagonal between two corner-touching obstacles
   // The cost model of every planner (global_planner's): a move into a cell of cost c costs
   // step_length x (neutral_cost + cost_factor x c) / neutral_cost, and a route's cost, L_k, is
@@ -54,25 +40,6 @@ struct Parameters {
   // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
   // turns it on.
   bool smooth_path = false;
-  IslandStrategy island_strategy = IslandStrategy::kGeodesic;
-  double island_spacing_max = 2.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
-  // Geodesic islands: the ants walk on the cells at most this many moves from the cheapest
-  // route (ColonyRegion), so memory and set-up follow the route, not the map; 0 = the whole
-  // map. The paper's islands and classic ACO always use the whole map.
-  int region_margin = 12;
-  int early_stop_iterations = 0;  // stop after this many iterations without improvement; 0 = off
-  // With early stopping on (early_stop_iterations > 0), geodesic EACI also stops as soon as its
-  // best route costs at most (1 + stop_gap) x the cheapest route's cost, which its A* search
-  // knows before the ants start: 0 = once a route is as cheap (no later iteration could beat
-  // it); 0.01 = within 1 %. The paper's islands and classic ACO know no such cost.
-  double stop_gap = 0.0;
-  std::uint64_t seed = 1;
-  int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
-};
-
-class ParameterError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.
@@ -114,53 +81,7 @@ inline void validate(const Parameters& p) {
 }
 
 
-inline const char* toString(IslandStrategy s) {
-  switch (s) {
-    case IslandStrategy::kGeodesic: return "geodesic";
-    case IslandStrategy::kPaper: return "paper";
-  }
-  return "?";
-}
-
 namespace detail {
-
-inline double parseDouble(const std::string& key, const std::string& text) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(begin, &end);
-  // Subnormal values are refused however they are spelt: strtod flags "1e-320" with ERANGE but
-  // not an exact "0x4p-1074", which then could not be written back in decimal (fuzz_parameters).
-  const bool subnormal = v != 0 && std::fabs(v) < std::numeric_limits<double>::min();
-  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || subnormal)
-    throw ParameterError(key + ": '" + text + "' is not a number");
-  return v;
-}
-
-inline long long parseInteger(const std::string& key, const std::string& text) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(begin, &end, 10);
-  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
-    throw ParameterError(key + ": '" + text + "' is not an integer");
-  return v;
-}
-
-inline int parseInt(const std::string& key, const std::string& text) {
-  const long long v = parseInteger(key, text);
-  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
-    throw ParameterError(key + ": " + text + " is out of range");
-  return static_cast<int>(v);
-}
-
-inline bool parseBool(const std::string& key, const std::string& text) {
-  std::string t = text;
-  for (char& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  if (t == "true" || t == "1" || t == "yes" || t == "on") return true;
-  if (t == "false" || t == "0" || t == "no" || t == "off") return false;
-  throw ParameterError(key + ": '" + text + "' is not a boolean (true/false)");
-}
 
 using Setter = std::function<void(Parameters&, const std::string&)>;
 

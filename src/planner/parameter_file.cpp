@@ -1,4 +1,4 @@
-#include "eaci/io/parameter_file.hpp"
+#include "eaci/planner/parameter_file.hpp"
 
 #include <yaml-cpp/depthguard.h>  // YAML::DeepRecursion (yaml-cpp 0.7)
 #include <yaml-cpp/yaml.h>

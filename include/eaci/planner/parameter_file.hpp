@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "eaci/aco/parameters.hpp"
+#include "eaci/planner/parameters.hpp"
 
 namespace eaci {
 

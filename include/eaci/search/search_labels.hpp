@@ -1,0 +1,78 @@
+// Search labels kept from search to search (GridSearchWorkspace, MeetingSearch): a caller that
+// keeps them allocates once per map size, and a search costs only the cells it labels. Each
+// label carries the number of the search that wrote it (a 2-byte generation stamp), so only
+// the stamps are ever cleared: on allocation, and once per 65 535 searches.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+
+namespace eaci {
+namespace detail {
+
+// One set of labels as a search sees it: a slot's cost and move belong to this search when its
+// stamp is this search's generation; generation 0 is no search's.
+struct StampedLabels {
+  double* costs;
+  std::uint8_t* moves;
+  std::uint16_t* generations;
+  std::uint16_t generation;
+  double cost(std::uint32_t slot) const {
+    return generations[slot] == generation ? costs[slot] : std::numeric_limits<double>::infinity();
+  }
+  std::uint8_t moveInto(std::size_t slot) const { return moves[slot]; }
+  void label(std::uint32_t slot, double c, std::uint8_t move) {
+    costs[slot] = c;
+    moves[slot] = move;
+    generations[slot] = generation;
+  }
+};
+
+// `Sets` sets of label arrays (one per side of a search) numbered by one count of searches.
+template <int Sets>
+class KeptLabels {
+ public:
+  // Room for `slots` labels in every set, none of them this search's. Costs and moves are read
+  // only where the stamp says they were written.
+  void prepare(std::size_t slots) {
+    if (slots > capacity_) {
+      for (Arrays& set : sets_) set.allocate(slots);
+      capacity_ = slots;
+      generation_ = 0;
+    }
+    if (++generation_ == 0) {  // the numbers wrapped round: forget every label
+      for (Arrays& set : sets_) std::fill(set.generations.get(), set.generations.get() + capacity_, std::uint16_t{0});
+      generation_ = 1;
+    }
+  }
+  // Set `set`'s labels of the current search.
+  StampedLabels of(int set) const {
+    const Arrays& a = sets_[static_cast<std::size_t>(set)];
+    return StampedLabels{a.costs.get(), a.moves.get(), a.generations.get(), generation_};
+  }
+
+ private:
+  struct Arrays {
+    std::unique_ptr<double[]> costs;
+    std::unique_ptr<std::uint8_t[]> moves;
+    std::unique_ptr<std::uint16_t[]> generations;
+    void allocate(std::size_t slots) {  // every label of generation 0: no search's
+      generations.reset();  // the old buffers go first
+      costs.reset();
+      moves.reset();
+      generations.reset(new std::uint16_t[slots]());
+      costs.reset(new double[slots]);
+      moves.reset(new std::uint8_t[slots]);
+    }
+  };
+  std::array<Arrays, Sets> sets_;
+  std::size_t capacity_ = 0;
+  std::uint16_t generation_ = 0;
+};
+
+}  // namespace detail
+}  // namespace eaci
