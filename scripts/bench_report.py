@@ -4,7 +4,7 @@
 Usage: scripts/bench_report.py [--records DIR] [--doc FILE] [--figures DIR] [--stdout] [STUDY ...]
 
 STUDY is paper, sweep, scale, deadline, costs or scen (default: every DIR/STUDY.jsonl there is).
-For each, the Markdown between `<!-- generated: STUDY -->` and `<!-- end -->` in the doc is
+For each, the Markdown between `<!-- generated: STUDY -->` (and `sweep-aco`) and `<!-- end -->` in the doc is
 replaced by the tables made from DIR/STUDY.jsonl (--stdout: printed instead), and the study's
 figures are drawn into the figures directory. A record is one JSON line written by eaci_bench
 (src/bench/record.hpp): command, map, variant, seed, problem, parameters (those that differ from
@@ -114,7 +114,7 @@ def provenance(df):
         source += " with uncommitted changes to" + "".join(f" `{f}`" for f in p["modified_solver_sources"])
     elif p["git_dirty"]:
         source += " with uncommitted changes outside the solver sources"
-    command = re.sub(r"^\S*eaci_bench", "build/bench/bin/eaci_bench", p["command_line"])
+    command = re.sub(r"--out \S+", "--out out/bench", re.sub(r"^\S*eaci_bench\S*", "build/bench/bin/eaci_bench", p["command_line"]))
     return (f"{source}; {p['compiler']}, {p['build_type']}; {p['cpu_model']}, {p['hardware_threads']} hardware "
             f"threads, {round(p['memory_gb'])} GB; {p['date_utc']}; load average {p['load_average_at_start']:g} "
             f"when the run began.\n\nCommand: `{command}`\n")
@@ -353,7 +353,8 @@ def sweep_tables(df):
             out.append(f"#### {SYMBOL[axis]} (`{axis}`, the paper's {FIGURE[axis]}) on {name}\n\n" + table(header, rows))
     aco = {(k[3], k[2], k[4]): s for k, s in points.items() if k[0] == "aco"}
     if not aco:
-        return "\n".join(out)
+        return {"sweep": "\n".join(out)}
+    eaci_out, out = out, []
 
     def within(s, paper):
         return all(0.5 <= x <= 2 for x in (s["iterations"] / paper[0], s["lost"] / paper[4]))
@@ -371,7 +372,9 @@ def sweep_tables(df):
     out.append("#### τ0 = 800 (our default; our default ρ is 0.1)\n\n" + table(
         ["map", "ρ", "iterations", "paper", "ours ÷ paper", "lost ants", "paper", "ours ÷ paper", "avg length",
          "best length", "success", "within 2× on both"], rows))
-    text, passing = ["#### Every τ0: average iterations (ours ÷ paper) / average lost ants (ours ÷ paper)\n"], []
+    text, passing = ["#### Every τ0: average iterations (ours ÷ paper) / average lost ants (ours ÷ paper)\n\nOnly τ0 "
+                     "relative to Q / L matters (the roulette wheel of Eq. 8 does not change when every τ is scaled): "
+                     "τ0 = 800 with Q = 100 equals the common MATLAB ACO code's τ0 = 8 with Q = 1.\n"], []
     for tau in taus:
         rows = []
         for rho in rhos:
@@ -388,7 +391,7 @@ def sweep_tables(df):
             ["ρ"] + [f"{n}: iterations / lost ants" for n in maps] + ["all maps within 2×"], rows))
     out += text
     out.append("Settings within a factor 2 on every map: " + (", ".join(passing) or "none") + "\n")
-    return "\n".join(out)
+    return {"sweep": "\n".join(eaci_out), "sweep-aco": "\n".join(out)}
 
 
 def sweep_figures(df, figures):
@@ -780,11 +783,14 @@ def main(argv):
     doc = None if args.stdout else open(args.doc).read()
     for study in studies:
         df = load(os.path.join(args.records, study + ".jsonl"))
-        text = TABLES[study](df)
+        blocks = TABLES[study](df)
+        for name, text in (blocks if isinstance(blocks, dict) else {study: blocks}).items():
+            if args.stdout:
+                print(f"<!-- generated: {name} -->\n\n{text}")
+            else:
+                doc = replace_block(doc, name, text)
         if args.stdout:
-            print(f"<!-- generated: {study} -->\n\n{text}")
             continue
-        doc = replace_block(doc, study, text)
         if study in FIGURES:
             os.makedirs(args.figures, exist_ok=True)
             FIGURES[study](df, args.figures)
