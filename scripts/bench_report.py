@@ -66,19 +66,13 @@ def mean(xs):
 
 
 def median(xs):
-    xs = sorted(xs)
-    n = len(xs)
-    if n == 0:
-        return INF
-    return xs[n // 2] if n % 2 else 0.5 * (xs[n // 2 - 1] + xs[n // 2])
+    xs, n = sorted(xs), len(xs)
+    return INF if n == 0 else xs[n // 2] if n % 2 else 0.5 * (xs[n // 2 - 1] + xs[n // 2])
 
 
 def std(xs):
-    xs = list(xs)
-    if len(xs) < 2:
-        return 0.0
     m = mean(xs)
-    return math.sqrt(sum((x - m) * (x - m) for x in xs) / (len(xs) - 1))
+    return math.sqrt(sum((x - m) * (x - m) for x in xs) / (len(xs) - 1)) if len(xs) > 1 else 0.0
 
 
 def fixed(v, d):
@@ -147,11 +141,9 @@ def paper_maps():
         return {m["name"]: m for m in json.load(f)["maps"]}
 
 
-def grid_of(df_map):
+def grid_of(name):
     """A paper map's obstacles (True) from maps/paper."""
-    name = df_map["map"].iloc[0]
-    with open(os.path.join(ROOT, "maps", "paper", name + ".txt")) as f:
-        return np.array([[int(x) for x in line.split()] for line in f if line.strip()], dtype=bool)
+    return np.loadtxt(os.path.join(ROOT, "maps", "paper", name + ".txt"), dtype=int).astype(bool)
 
 
 # ---------------------------------------------------------------- paper
@@ -246,7 +238,7 @@ def paper_figures(df, figures):
     specs = paper_maps()
     maps = list(df.groupby("map", sort=False))
     for name, m in maps:
-        grid, astar = grid_of(m), m[m["variant"] == "astar"].iloc[0]
+        grid, astar = grid_of(name), m[m["variant"] == "astar"].iloc[0]
         variants = list(m[m["variant"] != "astar"].groupby("variant", sort=False))
         fig, axes = plt.subplots(1, len(variants) + 1, figsize=(4.2 * (len(variants) + 1), 4.6))
         draw_grid(axes[0], grid)
@@ -482,21 +474,18 @@ def scale_tables(df):
         quality.append(row)
         memory.append([name] + [fixed(max(by[k]["extra.peak_rss_mb"]), 1) + " (" + fixed(max(by[k]["extra.plan_rss_mb"]), 1)
                                 + ")" if k in by else "—" for k in SCALE_LABEL if k != "eaci-early-all"])
-        if "eaci-early-1t" in by and "eaci-1t" in by and "astar" in by:
-            full, a = by["eaci-1t"].set_index("seed"), by["astar"].set_index("seed")
-            sel = [r for _, r in by["eaci-early-1t"].iterrows() if r["seed"] in full.index and r["seed"] in a.index
-                   and full.loc[r["seed"], "run.success"] and r["run.success"]]
-            if sel:
-                f_ms = sum(full.loc[r["seed"], "run.time_ms"] for r in sel)
-                e_ms = sum(r["run.time_ms"] for r in sel)
-                a_ms = sum(a.loc[r["seed"], "run.time_ms"] for r in sel)
-                n = len(sel)
-                early.append([name, fixed(a_ms / n, 2), fixed(f_ms / n, 1), fixed(e_ms / n, 1),
+        if all(k in by for k in ("eaci-early-1t", "eaci-1t", "astar")):  # seeds where both EACI runs found a route
+            e = by["eaci-early-1t"].merge(by["eaci-1t"], on="seed", suffixes=("", ".full")).merge(
+                by["astar"], on="seed", suffixes=("", ".astar"))
+            e = e[e["run.success"] & e["run.success.full"]]
+            if len(e):
+                f_ms, e_ms, a_ms = sum(e["run.time_ms.full"]), sum(e["run.time_ms"]), sum(e["run.time_ms.astar"])
+                early.append([name, fixed(a_ms / len(e), 2), fixed(f_ms / len(e), 1), fixed(e_ms / len(e), 1),
                               fixed((1 - e_ms / f_ms) * 100, 0) + " %",
-                              fixed(sum((r["length"] / full.loc[r["seed"], "length"] - 1) * 100 for r in sel) / n, 2) + " %",
-                              fixed(sum(gap(r["length"], r["problem.optimum"]) for r in sel) / n, 2) + " %",
-                              fixed(sum(r["run.iterations_run"] for r in sel) / n, 1), ratio(e_ms / n, a_ms / n),
-                              fixed(sum(r["run.first_iteration_ms"] for r in sel) / n, 1)])
+                              fixed(mean((x / y - 1) * 100 for x, y in zip(e["length"], e["length.full"])), 2) + " %",
+                              fixed(mean(map(gap, e["length"], e["problem.optimum"])), 2) + " %",
+                              fixed(mean(e["run.iterations_run"]), 1), ratio(e_ms, a_ms),
+                              fixed(mean(e["run.first_iteration_ms"]), 1)])
         if "extra.note" in case:
             notes += [f"- {name}: {r['variant']} seed {r['seed']}: {r['extra.note']}"
                       for _, r in case.iterrows() if isinstance(r["extra.note"], str)]
@@ -786,7 +775,7 @@ def main(argv):
         blocks = TABLES[study](df)
         for name, text in (blocks if isinstance(blocks, dict) else {study: blocks}).items():
             if args.stdout:
-                print(f"<!-- generated: {name} -->\n\n{text}")
+                print(f"<!-- generated: {name} -->\n\n{text}\n<!-- end -->\n")
             else:
                 doc = replace_block(doc, name, text)
         if args.stdout:

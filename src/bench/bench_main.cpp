@@ -50,12 +50,6 @@ int main(int argc, char** argv) {
     cmd->add_option("--runs", paper.runs, "seeds 1..runs per map, planner and value")->check(CLI::Range(1, 10000));
     cmd->add_option("--threads", paper.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
     outOption(cmd);
-    if (name == "paper") {
-      cmd->add_option("--snapshots", paper.snapshot_iterations, "iterations of the pheromone snapshots (0 = initial)")->delimiter(',');
-    } else {
-      cmd->add_option("--eaci-maps", paper.eaci_maps, "paper maps for the EACI sweeps")->delimiter(',');
-      cmd->add_option("--strategies", paper.strategies, "island strategies (paper, geodesic)")->delimiter(',');
-    }
   }
 
   eaci_bench::GeneratedOptions scale, deadline;
@@ -66,11 +60,6 @@ int main(int argc, char** argv) {
   kindsOption(scale_cmd);
   scale_cmd->add_option("--runs", scale.runs, "seeds per case (0 = 5 up to 400 cells, else 3)")->check(CLI::Range(0, 1000));
   scale_cmd->add_option("--budget-s", scale.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
-  scale_cmd->add_option("--slow-run-s", scale.slow_run_s, "a planner slower than this runs for the first seed only (s)")
-      ->check(CLI::PositiveNumber);
-  scale_cmd->add_option("--early-stop", scale.early_stop_iterations, "early_stop_iterations of the early-stopping EACI")
-      ->check(CLI::Range(1, 1000));
-  scale_cmd->add_option("--example-max-size", scale.example_max_size, "store maps and routes up to this size");
   outOption(scale_cmd);
 
   CLI::App* deadline_cmd = app.add_subcommand("deadline", "wall time of a plan against its time limit (max_planning_time)");
@@ -93,7 +82,6 @@ int main(int argc, char** argv) {
   costs_cmd->add_option("--lab-seeds", costs.lab_seeds, "EACI seeds per lab start/goal pair")->check(CLI::Range(1, 1000));
   costs_cmd->add_option("--budget-s", costs.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
   costs_cmd->add_flag("--quick", costs.quick, "sizes 100 and 200, 2 seeds, 2 lab seeds (about a minute)");
-  costs_cmd->add_option("--example-max-size", costs.example_max_size, "store cost maps and routes of seed 1 up to this size");
   outOption(costs_cmd);
 
   eaci_bench::ScenOptions scen;

@@ -150,11 +150,11 @@ void runPaper(const PaperOptions& options, RecordWriter& out) {
 
 void runSweep(const PaperOptions& options, RecordWriter& out) {
   PaperRunner runner(options, out, "sweep");
-  for (const LoadedMap& m : loadMaps(options.maps_dir, options.eaci_maps)) {
+  for (const LoadedMap& m : loadMaps(options.maps_dir, {"paper-20x20", "paper-40x40"})) {
     runner.astar(m);
     for (const SweepAxis& axis : sweepAxes())
       for (double value : axis.values)
-        for (const std::string& strategy : options.strategies) {
+        for (const std::string strategy : {"paper", "geodesic"}) {
           const Settings settings = {{"islands", "6"}, {"island_strategy", strategy}, {axis.key, text(value)}};
           runner.runs(m, "eaci-" + strategy, eaci::Algorithm::kEaci, settings, {{"axis", axis.key}, {"value", value}},
                       false, strategy + " | " + axis.key + " = " + text(value));

@@ -1,14 +1,6 @@
-// The studies of eaci_bench, each appending its records (record.hpp) to OUT/<command>.jsonl:
-//   paper    - the paper's Tables 1-3 on its maps: A*, classic ACO (our defaults and strong
-//              deposits), EACI with the paper's and with geodesic islands, seeds 1..runs
-//   sweep    - the paper's parameter studies (Figs 11-14) for EACI, and classic ACO's rho x tau0
-//   scale    - generated maps of growing size, the robot's move rule, each plan in a child
-//              process (peak memory): A*, EACI and ACO on one thread and all cores, early stopping
-//   deadline - EACI stopped only by the planning-time limit on large generated maps
-//   costs    - inflated cost maps (the lab, generated maps): A* and EACI, smoothed or not, with
-//              the driven routes' checks (cost_checks.hpp) and an independent Dijkstra
-//   scen     - a MovingAI scenario: A* and EACI per problem against the file's optimal lengths
-// Timing-only measurements belong in microbench/ (Google Benchmark), not here.
+// The studies of eaci_bench (what each runs: docs/benchmarks.md; the records: record.hpp). Each
+// appends one record per plan to OUT/<command>.jsonl. Timing-only measurements belong in
+// microbench/ (Google Benchmark), not here.
 #pragma once
 
 #include <string>
@@ -24,9 +16,7 @@ struct PaperOptions {
   std::string maps_dir;
   int runs = 20;
   int threads = 1;
-  std::vector<int> snapshot_iterations = {0, 1, 5, 15, 30};
-  std::vector<std::string> eaci_maps = {"paper-20x20", "paper-40x40"};  // sweep
-  std::vector<std::string> strategies = {"paper", "geodesic"};          // sweep
+  std::vector<int> snapshot_iterations = {0, 1, 5, 15, 30};  // paper: pheromone snapshots of EACI's seed 1
 };
 
 struct GeneratedOptions {  // scale and deadline
@@ -36,7 +26,7 @@ struct GeneratedOptions {  // scale and deadline
   double budget_s = 60.0;       // a colony run stops between iterations after this long
   double slow_run_s = 10.0;     // a planner whose run takes longer runs for the first seed only
   int early_stop_iterations = 10;
-  int example_max_size = 200;   // store maps and routes of seed 1 up to this size (figures)
+  int example_max_size = 200;   // keep maps and routes of seed 1 up to this size (figures)
   std::vector<double> limits_s = {0.1, 0.25, 0.5, 1.0, 2.0};  // deadline
   int threads = 1;              // deadline
 };
