@@ -321,10 +321,6 @@ def sweep_points(df):
     return {k: summary(g, optimum[k[4]]) for k, g in runs.groupby(keys, sort=False)}
 
 
-def number(v):
-    return f"{v:g}"
-
-
 def sweep_tables(df):
     specs, points = paper_maps(), sweep_points(df)
     out = [provenance(df)]
@@ -336,7 +332,7 @@ def sweep_tables(df):
                                        for c in ("length", "iterations", "lost ants", "optimal")]
             rows = []
             for value in dict.fromkeys(k[1] for k in eaci if k[0] == axis and k[4] == name):
-                row = [number(value)]
+                row = [f"{value:g}"]
                 for v in variants:
                     s = points[(axis, value, 0, 0, name, v)]
                     row += [fixed(s["avg_length"], 3), fixed(s["iterations"], 2), fixed(s["lost"], 1),
@@ -358,7 +354,7 @@ def sweep_tables(df):
         p = specs[name]["paper_aco"]
         for rho in rhos:
             s = aco[(800, rho, name)]
-            rows.append([name, number(rho), fixed(s["iterations"], 2), fixed(p[0], 1), ratio(s["iterations"], p[0]),
+            rows.append([name, f"{rho:g}", fixed(s["iterations"], 2), fixed(p[0], 1), ratio(s["iterations"], p[0]),
                          fixed(s["lost"], 1), fixed(p[4], 1), ratio(s["lost"], p[4]), fixed(s["avg_length"], 3),
                          fixed(s["best_length"], 3), f"{s['successes']}/{s['runs']}", "yes" if within(s, p) else "no"])
     out.append("#### τ0 = 800 (our default; our default ρ is 0.1)\n\n" + table(
@@ -370,7 +366,7 @@ def sweep_tables(df):
     for tau in taus:
         rows = []
         for rho in rhos:
-            row, ok = [number(rho)], True
+            row, ok = [f"{rho:g}"], True
             for name in maps:
                 s, p = aco[(tau, rho, name)], specs[name]["paper_aco"]
                 ok = ok and within(s, p)
@@ -378,8 +374,8 @@ def sweep_tables(df):
                            f"({ratio(s['lost'], p[4])})")
             rows.append(row + ["**yes**" if ok else "no"])
             if ok:
-                passing.append(f"τ0 = {number(tau)} with ρ = {number(rho)}")
-        text.append(f"τ0 = {number(tau)}:\n\n" + table(
+                passing.append(f"τ0 = {tau:g} with ρ = {rho:g}")
+        text.append(f"τ0 = {tau:g}:\n\n" + table(
             ["ρ"] + [f"{n}: iterations / lost ants" for n in maps] + ["all maps within 2×"], rows))
     out += text
     out.append("Settings within a factor 2 on every map: " + (", ".join(passing) or "none") + "\n")
@@ -701,9 +697,8 @@ def scen_tables(df):
         opt = a["problem.optimal_length"]
         gaps = [(x / opt - 1) * 100 if opt > 0 else (0.0 if x <= 1e-4 else INF) for x in e["length"] if math.isfinite(x)]
         e_ms = median(e["run.time_ms"])
-        problems.append({"index": index, "a": a, "e": e, "opt": opt, "gaps": gaps, "e_ms": e_ms,
-                         "diff": a["length"] - opt, "ratio": e_ms / a["run.time_ms"] if a["run.time_ms"] > 0 else INF,
-                         "length": mean([x for x in e["length"] if math.isfinite(x)])})
+        problems.append({"a": a, "e": e, "opt": opt, "gaps": gaps, "e_ms": e_ms, "diff": a["length"] - opt,
+                         "ratio": e_ms / a["run.time_ms"] if a["run.time_ms"] > 0 else INF})
     runs = [x for p in problems for x in p["e"]["length"]]
     solved = [p for p in problems if p["gaps"]]
     all_gaps = [g for p in problems for g in p["gaps"]]
@@ -734,15 +729,6 @@ def scen_tables(df):
     out.append("By route length (bands of the optimal length, cells; times are medians over the band's problems):\n\n"
                + table(["optimal length", "problems", "EACI solved", "time EACI/A* median", "EACI/A* worst",
                         "gap median", "gap worst", "A* ms", "EACI ms"], rows))
-    if len(problems) <= 50:
-        out.append(table(["#", "bucket", "start (x,y)", "goal (x,y)", "optimal", "A*", "A* − opt", "EACI", "gap %",
-                          "A* ms", "EACI ms", "EACI/A*"],
-                         [[f"{p['index'] + 1}" + ("" if abs(p["diff"]) <= 1e-4 else " **mismatch**"),
-                           p["a"]["problem.bucket"], "{1},{0}".format(*p["a"]["problem.start"]),
-                           "{1},{0}".format(*p["a"]["problem.goal"]), fixed(p["opt"], 4),
-                           fixed(p["a"]["length"], 4) if p["a"]["run.success"] else "no route", fixed(p["diff"], 6),
-                           fixed(p["length"], 4), fixed(mean(p["gaps"]), 2), ms(p["a"]["run.time_ms"]), ms(p["e_ms"]),
-                           fixed(p["ratio"], 1) + "×"] for p in problems]))
     return "\n".join(out)
 
 
