@@ -507,7 +507,8 @@ def scale_tables(df):
 def scale_figures(df, figures):
     for metric, ylabel, name in (("run.time_ms", "wall time per plan (ms, median)", "scale_time"),
                                  ("extra.peak_rss_mb", "peak resident set (MiB, worst)", "scale_memory"),
-                                 ("gap", "length over A* (%, mean of the successful runs)", "scale_gap")):
+                                 ("gap", "length over A* (%, mean of the successful runs)", "scale_gap"),
+                                 ("success", "runs that found a route (%)", "scale_success")):
         kinds = list(dict.fromkeys(df["problem.kind"]))
         fig, axes = plt.subplots(1, len(kinds), figsize=(6.5 * len(kinds), 4.6), squeeze=False)
         for ax, kind in zip(axes[0], kinds):
@@ -517,7 +518,9 @@ def scale_figures(df, figures):
                     continue
                 xs, ys = [], []
                 for size, r in sel[sel["variant"] == key].groupby("problem.size"):
-                    if metric == "gap":
+                    if metric == "success":
+                        value = 100 * mean(map(math.isfinite, r["length"]))
+                    elif metric == "gap":
                         gaps = [gap(x, o) for x, o in zip(r["length"], r["problem.optimum"]) if math.isfinite(x)]
                         value = mean(gaps) if gaps else math.nan
                     else:
@@ -526,7 +529,7 @@ def scale_figures(df, figures):
                     ys.append(value)
                 ax.plot(xs, ys, marker="o", label=label)
             ax.set_xscale("log")
-            ax.set_yscale("symlog" if metric == "gap" else "log")
+            ax.set_yscale({"gap": "symlog", "success": "linear"}.get(metric, "log"))
             ax.set_title(kind)
             ax.set_xlabel("map size (cells per side)")
             ax.set_ylabel(ylabel)
