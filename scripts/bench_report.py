@@ -767,15 +767,13 @@ def main(argv):
                 print(f"<!-- generated: {name} -->\n\n{text}\n<!-- end -->\n")
             else:
                 doc = replace_block(doc, name, text)
-        if args.stdout:
-            continue
-        if study in FIGURES:
+        if not args.stdout and study in FIGURES:
             os.makedirs(args.figures, exist_ok=True)
             FIGURES[study](df, args.figures)
-        print(f"bench_report.py: {study}: tables in {args.doc}" + (f", figures in {args.figures}" if study in FIGURES else ""))
     if doc is not None:
         with open(args.doc, "w") as f:
             f.write(doc)
+        print(f"bench_report.py: {', '.join(studies)}: tables in {args.doc}, figures in {args.figures}")
 
 
 if __name__ == "__main__":

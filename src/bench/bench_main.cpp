@@ -40,7 +40,6 @@ int main(int argc, char** argv) {
   std::string out_dir = "out/bench";
   std::vector<std::string> kinds;
   const auto kindsOption = [&](CLI::App* cmd) { cmd->add_option("--kinds", kinds, "map kinds: rooms, clutter, maze")->delimiter(','); };
-  const auto outOption = [&](CLI::App* cmd) { cmd->add_option("--out", out_dir, "output directory (records: OUT/<command>.jsonl)"); };
 
   eaci_bench::PaperOptions paper;
   for (const std::string name : {"paper", "sweep"}) {
@@ -49,7 +48,6 @@ int main(int argc, char** argv) {
     cmd->add_option("--maps", paper.maps_dir, "directory with the paper's maps and paper_maps.json")->required();
     cmd->add_option("--runs", paper.runs, "seeds 1..runs per map, planner and value")->check(CLI::Range(1, 10000));
     cmd->add_option("--threads", paper.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
-    outOption(cmd);
   }
 
   eaci_bench::GeneratedOptions scale, deadline;
@@ -60,7 +58,6 @@ int main(int argc, char** argv) {
   kindsOption(scale_cmd);
   scale_cmd->add_option("--runs", scale.runs, "seeds per case (0 = 5 up to 400 cells, else 3)")->check(CLI::Range(0, 1000));
   scale_cmd->add_option("--budget-s", scale.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
-  outOption(scale_cmd);
 
   CLI::App* deadline_cmd = app.add_subcommand("deadline", "wall time of a plan against its time limit (max_planning_time)");
   deadline_cmd->add_option("--sizes", deadline.sizes, "map sizes (cells per side)")->delimiter(',')->check(CLI::Range(6, 4096));
@@ -68,7 +65,6 @@ int main(int argc, char** argv) {
   deadline_cmd->add_option("--limits-s", deadline.limits_s, "time limits (s)")->delimiter(',')->check(CLI::PositiveNumber);
   deadline_cmd->add_option("--runs", deadline.runs, "map seeds per kind and size")->check(CLI::Range(1, 1000));
   deadline_cmd->add_option("--threads", deadline.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
-  outOption(deadline_cmd);
 
   eaci_bench::CostsOptions costs;
   CLI::App* costs_cmd = app.add_subcommand("costs", "cost-aware planning on inflated cost maps: the lab and generated "
@@ -82,7 +78,6 @@ int main(int argc, char** argv) {
   costs_cmd->add_option("--lab-seeds", costs.lab_seeds, "EACI seeds per lab start/goal pair")->check(CLI::Range(1, 1000));
   costs_cmd->add_option("--budget-s", costs.budget_s, "wall-time cap of one colony run (s)")->check(CLI::PositiveNumber);
   costs_cmd->add_flag("--quick", costs.quick, "sizes 100 and 200, 2 seeds, 2 lab seeds (about a minute)");
-  outOption(costs_cmd);
 
   eaci_bench::ScenOptions scen;
   std::string params_path;
@@ -96,11 +91,12 @@ int main(int argc, char** argv) {
   scen_cmd->add_option("--params", params_path, "EACI's parameters from this flat YAML (e.g. config/eaci_planner.yaml; "
                                                 "default: the project's defaults); corner cutting stays forbidden")
       ->check(CLI::ExistingFile);
-  outOption(scen_cmd);
 
   eaci_bench::MapCommandOptions map;
   std::string map_kind = "rooms";
   std::vector<int> room_cells, door_cells;
+  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; }))
+    cmd->add_option("--out", out_dir, "output directory (records: OUT/<command>.jsonl)");
   CLI::App* map_cmd = app.add_subcommand("map", "one generated map written as a map_server map (trinary YAML + PGM)");
   map_cmd->add_option("--kind", map_kind, "rooms, clutter or maze");
   map_cmd->add_option("--size", map.size, "cells per side")->check(CLI::Range(6, 4096));

@@ -150,31 +150,36 @@ class CostsRunner {
       params.smooth_path = v.smooth;
       const PlanRequest request{prepared.view, start, goal, v.algorithm, params,
                                 v.algorithm == eaci::Algorithm::kAStar ? 0.0 : o_.budget_s * 1000.0};
-      const ForkedResult child = runForked([&] { return toJson(timedPlan(request), false, true).dump(); });
+      const ForkedResult child = runForked([&] { return timedPlan(request, false, true).dump(); });
       if (!child.ok) throw std::runtime_error(v.key + " on " + problem["name"].get<std::string>() + ": " + child.error);
       Record r;
       r.map = group;
       r.variant = v.key;
       r.params = params;
-      r.run = runRecordFromJson(nlohmann::json::parse(child.output));
-      r.with_path = keep_paths;
+      r.run = nlohmann::json::parse(child.output);
       r.extra["peak_rss_mb"] = child.peak_rss_mb;
-      if (r.run.success) {  // the route the robot would drive: the smoothed one when smoothing is on
-        const RouteCheck c = checkRoute(prepared.planning, prepared.obstacles, prepared.costs, r.run.smoothed_path);
+      if (r.run["success"].get<bool>()) {  // the route the robot would drive: the smoothed one when smoothing is on
+        const RouteCheck c = checkRoute(prepared.planning, prepared.obstacles, prepared.costs, routeOf(r.run, true));
         r.extra["driven"] = {{"cost", finite(c.cost)}, {"length", finite(c.length)}, {"turn_deg", c.turn_deg},
                              {"min_clearance", finite(c.min_clearance)}, {"mean_cell_cost", finite(c.mean_cell_cost)},
                              {"lethal_cells", c.lethal_cells}, {"inscribed_cells", c.inscribed_cells}};
       }
       records.push_back(std::move(r));
     }
-    const RunRecord& astar = records.front().run;
+    const double astar_ms = records.front().run["time_ms"].get<double>();
+    const double astar_cost = records.front().run["cost"].is_number() ? records.front().run["cost"].get<double>() : INFINITY;
     for (Record& r : records) {
       r.problem = problem;
-      r.extra["time_ratio"] = finite(astar.time_ms > 0 ? r.run.time_ms / astar.time_ms : INFINITY);
-      r.extra["gap_pct"] = finite(r.run.success ? costGapPct(r.extra["driven"]["cost"].get<double>(), astar.cost) : INFINITY);
+      const bool success = r.run["success"].get<bool>();
+      r.extra["time_ratio"] = finite(astar_ms > 0 ? r.run["time_ms"].get<double>() / astar_ms : INFINITY);
+      r.extra["gap_pct"] = finite(success ? costGapPct(r.extra["driven"]["cost"].get<double>(), astar_cost) : INFINITY);
       if (r.variant.size() > 9 && r.variant.compare(r.variant.size() - 9, 9, "-smoothed") == 0)  // against its twin
         for (const Record& twin : records)
-          if (twin.variant + "-smoothed" == r.variant) r.extra["same_grid_route"] = twin.run.path == r.run.path;
+          if (twin.variant + "-smoothed" == r.variant) r.extra["same_grid_route"] = twin.run["path"] == r.run["path"];
+    }
+    for (Record& r : records) {  // the cells only for the figures' examples
+      if (!keep_paths)
+        for (const char* key : {"path", "smoothed_path", "islands"}) r.run.erase(key);
       out_.append(r);
     }
   }

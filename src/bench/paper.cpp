@@ -1,6 +1,5 @@
 // `paper` and `sweep`: the paper's maps, corner cutting allowed, the paper's comparison
 // parameters (the Parameters defaults), seeds 1..runs.
-#include <cmath>
 #include <functional>
 
 #include "common/paper_maps.hpp"
@@ -38,23 +37,13 @@ struct SweepAxis {
   std::vector<double> values;
 };
 
-std::vector<double> steps(double first, double last, double step) {
-  std::vector<double> values;
-  for (int k = 0;; ++k) {
-    const double v = std::round((first + k * step) * 1e9) / 1e9;
-    if (v > last + 1e-9) break;
-    values.push_back(v);
-  }
-  return values;
-}
-
 // The paper's Figs 11-14 (tuning runs with N = 6).
 const std::vector<SweepAxis>& sweepAxes() {
   static const std::vector<SweepAxis> axes = {
-      {"epsilon", steps(0.1, 1.0, 0.1)},
+      {"epsilon", {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1}},
       {"lambda", {1, 2, 3, 4, 5, 6, 10, 20, 50, 100}},
-      {"islands", steps(2, 15, 1)},
-      {"kappa", steps(0.1, 1.3, 0.1)},
+      {"islands", {2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}},
+      {"kappa", {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.1, 1.2, 1.3}},
   };
   return axes;
 }
@@ -100,7 +89,7 @@ class PaperRunner {
   // The exact A* route (microseconds: the median time of 21).
   void astar(const LoadedMap& m) {
     const eaci::Parameters params = parameters({}, 1, 1);
-    append(m, "astar", params, timedPlanMedian(request(m, eaci::Algorithm::kAStar, params), 21), {}, true);
+    append(m, "astar", params, timedPlanMedian(request(m, eaci::Algorithm::kAStar, params), 21, true), {});
   }
 
   // Seeds 1..runs of one variant; `extra` goes into every record, pheromone snapshots into seed 1's.
@@ -112,23 +101,22 @@ class PaperRunner {
       nlohmann::json more = extra;
       if (detailed && k == 1 && algorithm == eaci::Algorithm::kEaci)
         more["pheromone_snapshots"] = pheromoneSnapshots(request(m, algorithm, params), options_.snapshot_iterations);
-      append(m, variant, params, timedPlan(request(m, algorithm, params)), more, detailed);
+      append(m, variant, params, timedPlan(request(m, algorithm, params), detailed, detailed), more);
     }
   }
 
   void finish() { progress_.finish(); }
 
  private:
-  void append(const LoadedMap& m, const std::string& variant, const eaci::Parameters& params, const RunRecord& run,
-              const nlohmann::json& extra, bool detailed) {
+  void append(const LoadedMap& m, const std::string& variant, const eaci::Parameters& params, nlohmann::json run,
+              const nlohmann::json& extra) {
     Record r;
     r.map = m.spec.name;
     r.variant = variant;
     r.problem = {{"start", m.spec.start}, {"goal", m.spec.goal}, {"width", m.map.width}, {"height", m.map.height}};
     r.params = params;
-    r.run = run;
-    r.extra = extra;
-    r.with_curves = r.with_path = detailed;
+    r.run = std::move(run);
+    r.extra = extra.is_null() ? nlohmann::json::object() : extra;
     out_.append(r);
   }
 

@@ -17,6 +17,8 @@ namespace eaci_bench {
 
 namespace {
 
+using eaci::report::finiteOrNull;
+
 using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start) {
@@ -28,29 +30,6 @@ double processCpuMilliseconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-RunRecord recordFrom(const eaci::PlanResult& result, const eaci::Parameters& params) {
-  RunRecord run;
-  run.seed = params.seed;
-  run.success = result.success() && !result.route_from_search;
-  run.route_from_search = result.route_from_search;
-  run.length = result.length;
-  run.cost = result.cost;
-  run.smoothed_length = result.smoothed_length;
-  run.total_turn_deg = result.total_turn_deg;
-  run.iterations_to_converge = result.iterations_to_converge;
-  run.iterations_run = result.iterations_run;
-  run.lost_ants_total = result.lost_ants_total;
-  run.stopped_early = result.stopped_early;
-  run.interrupted = result.interrupted;
-  run.best_cost_so_far = result.best_length_so_far;         // B2: best_cost_so_far
-  run.iteration_best_cost = result.iteration_best_length;   // B2: iteration_best_cost
-  run.lost_ants_per_iteration = result.lost_ants_per_iteration;
-  run.path = result.path;
-  run.smoothed_path = result.smoothed_path;
-  run.islands = result.islands;
-  return run;
 }
 
 double median(std::vector<double> values) {
@@ -78,26 +57,7 @@ double firstNumber(const char* file, bool skip_key) {
 
 }  // namespace
 
-nlohmann::json toJson(const RunRecord& run, bool with_curves, bool with_path) {
-  nlohmann::json j = run;
-  if (!with_curves)
-    for (const char* key : {"best_cost_so_far", "iteration_best_cost", "lost_ants_per_iteration", "iteration_end_ms"})
-      j.erase(key);
-  if (!with_path)
-    for (const char* key : {"path", "smoothed_path", "islands"}) j.erase(key);
-  else if (run.smoothed_path == run.path)
-    j.erase("smoothed_path");
-  return j;
-}
-
-RunRecord runRecordFromJson(nlohmann::json j) {
-  eaci::report::nullsToInfinity(j);
-  RunRecord run = j.get<RunRecord>();
-  if (!j.contains("smoothed_path")) run.smoothed_path = run.path;
-  return run;
-}
-
-RunRecord timedPlan(const PlanRequest& request) {
+nlohmann::json timedPlan(const PlanRequest& request, bool with_curves, bool with_path) {
   std::vector<double> iteration_end_ms;
   iteration_end_ms.reserve(static_cast<std::size_t>(request.params.max_iterations));
   eaci::PlanOptions options;
@@ -108,32 +68,50 @@ RunRecord timedPlan(const PlanRequest& request) {
     if (iteration > 0) iteration_end_ms.push_back(millisecondsSince(start));
   };
   if (request.budget_ms > 0) options.should_stop = [&](int) { return millisecondsSince(start) > request.budget_ms; };
-  const eaci::PlanResult result =
-      eaci::plan(request.view, request.start, request.goal, request.algorithm, request.params, options);
+  const eaci::PlanResult r = eaci::plan(request.view, request.start, request.goal, request.algorithm, request.params, options);
   const double total_ms = millisecondsSince(start);
   const double cpu_ms = processCpuMilliseconds() - cpu_start;
 
-  RunRecord run = recordFrom(result, request.params);
-  run.time_ms = total_ms;
-  run.cpu_ms = cpu_ms;
-  run.iteration_end_ms = std::move(iteration_end_ms);
-  const auto best = static_cast<std::size_t>(std::max(run.iterations_to_converge, 0));
-  run.time_to_best_ms = best >= 1 && best <= run.iteration_end_ms.size() ? run.iteration_end_ms[best - 1] : total_ms;
-  run.first_iteration_ms = run.iteration_end_ms.empty() ? total_ms : run.iteration_end_ms.front();
+  const auto best = static_cast<std::size_t>(std::max(r.iterations_to_converge, 0));
+  nlohmann::json run = {
+      // A route the colony did not find (geodesic EACI's fallback to its search route) is no success here.
+      {"success", r.success() && !r.route_from_search}, {"route_from_search", r.route_from_search},
+      {"length", finiteOrNull(r.length)}, {"cost", finiteOrNull(r.cost)},
+      {"smoothed_length", finiteOrNull(r.smoothed_length)}, {"total_turn_deg", r.total_turn_deg},
+      {"iterations_to_converge", r.iterations_to_converge}, {"iterations_run", r.iterations_run},
+      {"lost_ants_total", r.lost_ants_total}, {"stopped_early", r.stopped_early}, {"interrupted", r.interrupted},
+      {"time_ms", total_ms}, {"cpu_ms", cpu_ms},
+      {"time_to_best_ms", best >= 1 && best <= iteration_end_ms.size() ? iteration_end_ms[best - 1] : total_ms},
+      {"first_iteration_ms", iteration_end_ms.empty() ? total_ms : iteration_end_ms.front()}};
+  if (with_curves) {
+    run["best_cost_so_far"] = finiteOrNull(r.best_length_so_far);         // B2: best_cost_so_far
+    run["iteration_best_cost"] = finiteOrNull(r.iteration_best_length);   // B2: iteration_best_cost
+    run["lost_ants_per_iteration"] = r.lost_ants_per_iteration;
+    run["iteration_end_ms"] = iteration_end_ms;
+  }
+  if (with_path) {
+    run["path"] = r.path;
+    if (r.smoothed_path != r.path) run["smoothed_path"] = r.smoothed_path;
+    run["islands"] = r.islands;
+  }
   return run;
 }
 
-RunRecord timedPlanMedian(const PlanRequest& request, int repeats) {
-  RunRecord record = timedPlan(request);
-  std::vector<double> times = {record.time_ms}, cpu_times = {record.cpu_ms};
+nlohmann::json timedPlanMedian(const PlanRequest& request, int repeats, bool with_path) {
+  nlohmann::json run = timedPlan(request, false, with_path);
+  std::vector<double> times = {run["time_ms"].get<double>()}, cpu_times = {run["cpu_ms"].get<double>()};
   for (int k = 1; k < repeats; ++k) {
-    const RunRecord again = timedPlan(request);
-    times.push_back(again.time_ms);
-    cpu_times.push_back(again.cpu_ms);
+    const nlohmann::json again = timedPlan(request, false, false);
+    times.push_back(again["time_ms"].get<double>());
+    cpu_times.push_back(again["cpu_ms"].get<double>());
   }
-  record.time_ms = record.time_to_best_ms = median(times);
-  record.cpu_ms = median(cpu_times);
-  return record;
+  run["time_ms"] = run["time_to_best_ms"] = median(times);
+  run["cpu_ms"] = median(cpu_times);
+  return run;
+}
+
+eaci::CellPath routeOf(const nlohmann::json& run, bool smoothed) {
+  return (smoothed && run.contains("smoothed_path") ? run["smoothed_path"] : run["path"]).get<eaci::CellPath>();
 }
 
 nlohmann::json pheromoneSnapshots(const PlanRequest& request, const std::vector<int>& iterations) {
@@ -190,9 +168,9 @@ void RecordWriter::append(const Record& r) {
   for (const auto& [key, value] : all.items())
     if (key != "seed" && value != defaults_[key]) params[key] = value;
   const nlohmann::json line = {{"command", command_},         {"map", r.map},
-                               {"variant", r.variant},        {"seed", r.run.seed},
+                               {"variant", r.variant},        {"seed", r.params.seed},
                                {"problem", r.problem},        {"parameters", params},
-                               {"run", toJson(r.run, r.with_curves, r.with_path)},
+                               {"run", r.run},
                                {"extra", r.extra.is_null() ? nlohmann::json::object() : r.extra}, {"provenance", provenance_}};
   out_ << line.dump() << '\n';
   if (!out_) throw std::runtime_error("error while writing " + path_);

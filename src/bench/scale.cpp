@@ -38,16 +38,15 @@ nlohmann::json problemOf(const GeneratedMap& g, bool with_grid) {
 
 // One plan in a child process: its record and the child's peak memory.
 Record forkedPlan(const GeneratedMap& g, const std::string& variant, const PlanRequest& request, bool keep_path) {
-  const ForkedResult child = runForked([&] { return toJson(timedPlan(request), false, keep_path).dump(); });
+  const ForkedResult child = runForked([&] { return timedPlan(request, false, keep_path).dump(); });
   if (!child.ok) throw std::runtime_error(variant + " on " + toString(g.kind) + " " + std::to_string(g.size) + ": " + child.error);
   Record r;
   r.map = std::string(toString(g.kind)) + " " + std::to_string(g.size);
   r.variant = variant;
   r.problem = problemOf(g, keep_path);
   r.params = request.params;
-  r.run = runRecordFromJson(nlohmann::json::parse(child.output));
+  r.run = nlohmann::json::parse(child.output);
   r.extra = {{"peak_rss_mb", child.peak_rss_mb}, {"plan_rss_mb", std::max(0.0, child.peak_rss_mb - child.start_rss_mb)}};
-  r.with_path = keep_path;
   return r;
 }
 
@@ -77,11 +76,11 @@ void runScale(const GeneratedOptions& o, RecordWriter& out) {
           Record r = forkedPlan(g, v.key, PlanRequest{g.map.view(), g.start, g.goal, v.algorithm, params, budget_ms}, example);
           // A run stopped by the budget: dropped for the rest of this case and larger maps of the
           // kind. A slow run: the rest of this case's seeds are dropped.
-          if (r.run.interrupted) {
+          if (r.run["interrupted"].get<bool>()) {
             given_up[std::string(toString(kind)) + "/" + v.key] = name;
             skip.insert(v.key);
             r.extra["note"] = "hit the " + std::to_string(o.budget_s) + " s budget; later seeds and larger maps skipped";
-          } else if (r.run.time_ms > o.slow_run_s * 1000.0 && k < seeds) {
+          } else if (r.run["time_ms"].get<double>() > o.slow_run_s * 1000.0 && k < seeds) {
             skip.insert(v.key);
             r.extra["note"] = "slower than " + std::to_string(o.slow_run_s) + " s; later seeds skipped";
           }
