@@ -17,7 +17,6 @@ import json
 import math
 import os
 import re
-import sys
 
 import matplotlib
 
@@ -206,8 +205,7 @@ def paper_tables(df):
 
 def draw_grid(ax, grid, cmap=ListedColormap(["white", "black"])):
     ax.imshow(grid, cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    ax.set(xticks=[], yticks=[])
 
 
 def draw_route(ax, cells, color, **kw):
@@ -265,8 +263,7 @@ def paper_figures(df, figures):
                     image = ax2.imshow(np.ma.masked_where(grid, np.clip(f, vmin, vmax)), cmap=cmap,
                                        norm=LogNorm(vmin=vmin, vmax=vmax), interpolation="nearest")
                     ax2.set_title("initial" if s["iteration"] == 0 else f"after iteration {s['iteration']}")
-                    ax2.set_xticks([])
-                    ax2.set_yticks([])
+                    ax2.set(xticks=[], yticks=[])
                 fig2.colorbar(image, ax=list(axes2[0]), shrink=0.8, label="strongest pheromone leaving the cell")
                 fig2.suptitle(f"{name}: {PAPER_LABEL[variant]}, seed 1 (obstacles black)")
                 save(fig2, figures, f"pheromone_{name}_{variant.replace('eaci-', '')}.png")
@@ -296,9 +293,8 @@ def paper_figures(df, figures):
             if kind != "lost_ants":
                 ax.axhline(optimum, color="0.3", ls="--", lw=1, label="A* optimum")
                 ax.set_ylim(optimum * 0.97, optimum * 1.5)
-            ax.set_title(name, fontsize=11)
-            ax.set_xlabel("wall time (ms, one thread)" if kind == "convergence_time" else "iteration")
-            ax.set_ylabel("lost ants (of 50), mean of the runs" if kind == "lost_ants" else "route length (cells)")
+            ax.set(title=name, xlabel="wall time (ms, one thread)" if kind == "convergence_time" else "iteration",
+                   ylabel="lost ants (of 50), mean of the runs" if kind == "lost_ants" else "route length (cells)")
             ax.grid(alpha=0.3)
         handles, labels = axes[0].get_legend_handles_labels()
         fig.legend(handles, labels, loc="lower center", ncol=len(labels), fontsize=9, frameon=False)
@@ -397,8 +393,7 @@ def sweep_figures(df, figures):
                 ax.set_xscale("log")
             if metric == "lost":
                 ax.set_yscale("symlog", linthresh=1.0)
-            ax.set_xlabel(f"{SYMBOL[axis]} ({axis})")
-            ax.set_ylabel(label)
+            ax.set(xlabel=f"{SYMBOL[axis]} ({axis})", ylabel=label)
             ax.grid(alpha=0.3)
         axes[0].legend(fontsize=8)
         fig.suptitle(f"EACI against {SYMBOL[axis]} (the paper's {FIGURE[axis]}); N = 6 unless swept")
@@ -418,10 +413,7 @@ def sweep_figures(df, figures):
                     sel = sorted(k for k in aco if k[0] == tau and k[2] == name)
                     ax.plot([k[1] for k in sel], [aco[k][metric] / specs[name]["paper_aco"][index] for k in sel],
                             marker="o", ms=4, color=color, label=f"τ0 = {tau:g}")
-                ax.set_yscale("log")
-                ax.set_xlabel("ρ (aco_rho)")
-                ax.set_ylabel(label)
-                ax.set_title(name)
+                ax.set(yscale="log", xlabel="ρ (aco_rho)", ylabel=label, title=name)
                 ax.grid(alpha=0.3, which="both")
         axes[0][0].legend(fontsize=8)
         fig.suptitle("Classic ACO against the paper's ACO row (green: within a factor 2)")
@@ -504,6 +496,16 @@ def scale_tables(df):
     return "\n".join(out)
 
 
+def scale_value(metric, r):
+    """One point of a scale figure: the runs `r` of one planner on one map size."""
+    if metric == "success":
+        return 100 * mean(map(math.isfinite, r["length"]))
+    if metric == "gap":
+        gaps = [gap(x, o) for x, o in zip(r["length"], r["problem.optimum"]) if math.isfinite(x)]
+        return mean(gaps) if gaps else math.nan
+    return (median if metric == "run.time_ms" else max)(list(r[metric]))
+
+
 def scale_figures(df, figures):
     for metric, ylabel, name in (("run.time_ms", "wall time per plan (ms, median)", "scale_time"),
                                  ("extra.peak_rss_mb", "peak resident set (MiB, worst)", "scale_memory"),
@@ -516,23 +518,10 @@ def scale_figures(df, figures):
             for key, label in SCALE_LABEL.items():
                 if metric == "gap" and key == "astar":
                     continue
-                xs, ys = [], []
-                for size, r in sel[sel["variant"] == key].groupby("problem.size"):
-                    if metric == "success":
-                        value = 100 * mean(map(math.isfinite, r["length"]))
-                    elif metric == "gap":
-                        gaps = [gap(x, o) for x, o in zip(r["length"], r["problem.optimum"]) if math.isfinite(x)]
-                        value = mean(gaps) if gaps else math.nan
-                    else:
-                        value = (median if metric == "run.time_ms" else max)(list(r[metric]))
-                    xs.append(size)
-                    ys.append(value)
-                ax.plot(xs, ys, marker="o", label=label)
-            ax.set_xscale("log")
-            ax.set_yscale({"gap": "symlog", "success": "linear"}.get(metric, "log"))
-            ax.set_title(kind)
-            ax.set_xlabel("map size (cells per side)")
-            ax.set_ylabel(ylabel)
+                cases = sel[sel["variant"] == key].groupby("problem.size")
+                ax.plot([size for size, _ in cases], [scale_value(metric, r) for _, r in cases], marker="o", label=label)
+            ax.set(xscale="log", yscale={"gap": "symlog", "success": "linear"}.get(metric, "log"), title=kind,
+                   xlabel="map size (cells per side)", ylabel=ylabel)
             ax.grid(alpha=0.3, which="both")
         axes[0][0].legend(fontsize=8)
         fig.tight_layout()
@@ -670,17 +659,13 @@ def costs_figures(df, figures):
         groups = list(sel.groupby("map", sort=False))
         ax.boxplot([[num(x) for x in g["extra.gap_pct"]] for _, g in groups], labels=[n for n, _ in groups])
         ax.axhline(0, color="0.4", lw=0.8)
-        ax.set_ylabel("cost over A*'s (%)")
-        ax.set_title(COST_LABEL[variant])
+        ax.set(ylabel="cost over A*'s (%)", title=COST_LABEL[variant])
         ax.tick_params(axis="x", rotation=30)
-        ax.grid(alpha=0.3)
     fig.tight_layout()
     save(fig, figures, "costs_gap.png")
     lab = df[(df["map"] == "lab") & df["problem.costs"].notna()] if "problem.costs" in df else df.iloc[0:0]
     if len(lab):
-        first = lab.iloc[0]
-        size = first["problem.size"]
-        costs = np.asarray(first["problem.costs"], dtype=float).reshape(-1, size)
+        costs = np.asarray(lab.iloc[0]["problem.costs"], dtype=float).reshape(-1, lab.iloc[0]["problem.size"])
         fig, ax = plt.subplots(figsize=(9, 6))
         ax.imshow(costs, cmap="Greys", vmin=0, vmax=255, interpolation="nearest")
         for _, r in lab[lab["seed"] == 1].iterrows():
@@ -749,7 +734,7 @@ def replace_block(doc, name, text):
     return pattern.sub(lambda m: m.group(1) + "\n" + text.rstrip("\n") + "\n\n" + m.group(2), doc, count=1)
 
 
-def main(argv):
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("studies", nargs="*", choices=STUDIES + [[]], default=[])
     parser.add_argument("--records", default="out/bench")
@@ -777,4 +762,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    main()

@@ -1,9 +1,7 @@
-// `costs`: cost-aware planning on inflated cost maps (issue #10). The lab map with the move_base
-// config's inflation (several start/goal pairs) and generated rooms and clutter maps inflated
-// with costmap_2d's formula; A*, A* smoothed, EACI and EACI smoothed on each, one thread, each
-// plan in its own child process. Per run the route the robot would drive is checked
-// (cost_checks.hpp: cost, length, turning, clearance, mean cell cost, lethal and inscribed cells);
-// per problem A*'s cost is set beside an independent weighted Dijkstra.
+// `costs`: cost-aware planning on inflated cost maps (issue #10): the lab with the move_base
+// config's inflation and generated rooms and clutter maps; A* and EACI, smoothed or not, one
+// thread, each plan in a child process; the driven routes checked and A*'s cost set beside an
+// independent weighted Dijkstra (cost_checks.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <set>

@@ -1,9 +1,8 @@
 // `paper` and `sweep`: the paper's maps, corner cutting allowed, the paper's comparison
 // parameters (the Parameters defaults), seeds 1..runs.
-#include <functional>
+#include <algorithm>
 
 #include "common/paper_maps.hpp"
-#include "eaci/grid/cell_numbering.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/text.hpp"
 #include "progress.hpp"

@@ -18,9 +18,7 @@ class Progress {
   void finish() const { std::fprintf(stderr, "%s: done in %.1f s\n", command_.c_str(), seconds()); }
 
  private:
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
   std::string command_;
   std::chrono::steady_clock::time_point start_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <stdexcept>
@@ -38,21 +39,12 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string firstValue(const char* file, const std::string& key) {
+// The value after "key:" on the first line of a /proc file that starts with `key` (no key: the first line).
+std::string procValue(const char* file, const std::string& key) {
   std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind(key, 0) == 0) return line.substr(line.find(':') + 2);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key, 0) == 0) return key.empty() ? line : line.substr(line.find_first_not_of(" \t", line.find(':') + 1));
   return "unknown";
-}
-
-double firstNumber(const char* file, bool skip_key) {
-  std::ifstream in(file);
-  std::string key;
-  double value = 0.0;
-  if (skip_key) in >> key;
-  in >> value;
-  return value;
 }
 
 }  // namespace
@@ -144,11 +136,11 @@ nlohmann::json provenance(const std::string& command_line) {
           {"modified_solver_sources", source_state::kModifiedSolverSources},
           {"compiler", compiler},
           {"build_type", build_type},
-          {"cpu_model", firstValue("/proc/cpuinfo", "model name")},
+          {"cpu_model", procValue("/proc/cpuinfo", "model name")},
           {"hardware_threads", std::thread::hardware_concurrency()},
-          {"memory_gb", firstNumber("/proc/meminfo", true) / (1024.0 * 1024.0)},
+          {"memory_gb", std::atof(procValue("/proc/meminfo", "MemTotal").c_str()) / (1024.0 * 1024.0)},
           {"date_utc", date},
-          {"load_average_at_start", firstNumber("/proc/loadavg", false)},
+          {"load_average_at_start", std::atof(procValue("/proc/loadavg", "").c_str())},
           {"command_line", command_line}};
 }
 
