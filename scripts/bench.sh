@@ -22,7 +22,7 @@ bench=build/bench/bin/eaci_bench
 steps=("$@")
 [ ${#steps[@]} -gt 0 ] || steps=(paper sweep scale deadline costs scen report)
 
-EACI_WITH_ROS=OFF scripts/install_deps.sh python3-matplotlib python3-numpy python3-pandas
+EACI_WITH_ROS=OFF scripts/install_deps.sh
 cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_BUILD_TESTS=OFF >/dev/null
 cmake --build build/bench -j"$(nproc)" --target eaci_bench
 
