@@ -11,7 +11,9 @@ set -euo pipefail
 cli_only=false
 if [ "${1:-}" = "--cli" ]; then cli_only=true; shift; fi
 packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libstb-dev)
-$cli_only || packages+=(libgtest-dev libbenchmark-dev)
+# python3-pandas, python3-matplotlib: scripts/bench_report.py (docs/benchmarks.md's tables and figures from
+# eaci_bench's records; test_bench_scen.cpp runs it).
+$cli_only || packages+=(libgtest-dev libbenchmark-dev python3-pandas python3-matplotlib)
 if ! $cli_only && [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs
              libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev

@@ -1,6 +1,7 @@
 // Runs the built eaci_bench binary's `scen` command (and eaci_plan) on the hand-made MovingAI
-// map test/data/movingai/wall.map and its scenario wall.scen, and checks the lengths against
-// optima worked out by hand.
+// map test/data/movingai/wall.map and its scenario wall.scen, and checks its records (their
+// schema, src/bench/record.hpp) and the lengths against optima worked out by hand; a missing
+// binary fails.
 //
 // wall.map (x = column 0..7, y = row 0..5; '@' and 'T' blocked, '.' and 'G' passable):
 //
@@ -71,7 +72,7 @@ class ScenTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("eaci_scen_" + std::string(info->name()) + "_" + std::to_string(static_cast<long>(::getpid())));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    if (!fs::exists(kBench)) GTEST_SKIP() << "eaci_bench not built: " << kBench;
+    ASSERT_TRUE(fs::exists(kBench)) << "eaci_bench not built: " << kBench;
   }
   void TearDown() override {
     std::error_code ignored;
@@ -88,17 +89,33 @@ class ScenTest : public ::testing::Test {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
-  json runScen(const std::string& scen, const std::string& extra, int expected_status = 0) {
+  // The scen command's records (report/scen.jsonl), one per plan, each checked against the schema.
+  std::vector<json> runScen(const std::string& scen, const std::string& extra, int expected_status = 0) {
     const int status = run(kBench, "scen " + quote(scen) + " --out " + quote((dir_ / "report").string()) + " " + extra);
     EXPECT_EQ(status, expected_status) << err_;
-    const fs::path report = dir_ / "report" / "scen.json";
-    if (!fs::exists(report)) {
-      ADD_FAILURE() << "no report: " << err_;
-      return json::object();
+    std::ifstream in(dir_ / "report" / "scen.jsonl");
+    EXPECT_TRUE(in.good()) << "no records: " << err_;
+    std::vector<json> records;
+    for (std::string line; std::getline(in, line);) {
+      records.push_back(json::parse(line));
+      const json& r = records.back();
+      for (const char* key : {"command", "map", "variant", "seed", "problem", "parameters", "run", "extra", "provenance"})
+        EXPECT_TRUE(r.contains(key)) << key << " missing in " << line;
+      EXPECT_EQ(r["command"], "scen");
+      EXPECT_EQ(r["map"], "wall.map");
+      for (const char* key : {"success", "length", "cost", "iterations_to_converge", "lost_ants_total", "time_ms"})
+        EXPECT_TRUE(r["run"].contains(key)) << key;
+      EXPECT_GE(r["seed"].get<int>(), 1);
+      EXPECT_EQ(r["provenance"]["command_line"].get<std::string>().find(kBench), 0u);
     }
-    EXPECT_TRUE(fs::exists(dir_ / "report" / "scen.csv"));
-    EXPECT_TRUE(fs::exists(dir_ / "report" / "scen.md"));
-    return json::parse(readFile(report));
+    return records;
+  }
+
+  static std::vector<json> ofVariant(const std::vector<json>& records, const std::string& variant) {
+    std::vector<json> out;
+    for (const json& r : records)
+      if (r["variant"] == variant) out.push_back(r);
+    return out;
   }
 
   fs::path dir_;
@@ -106,84 +123,66 @@ class ScenTest : public ::testing::Test {
 };
 
 TEST_F(ScenTest, AStarMatchesTheHandComputedOptimaOfEveryProblem) {
-  const json j = runScen(kData + "/wall.scen", "--seeds 2");
-  const json& problems = j["problems"];
-  ASSERT_EQ(problems.size(), kOptima.size());
+  const std::vector<json> records = runScen(kData + "/wall.scen", "--seeds 2");
+  ASSERT_EQ(records.size(), 3 * kOptima.size());  // per problem A* once, then EACI seeds 1 and 2
+  const std::vector<json> astar = ofVariant(records, "astar"), eaci = ofVariant(records, "eaci");
+  ASSERT_EQ(astar.size(), kOptima.size());
   for (std::size_t k = 0; k < kOptima.size(); ++k) {
     SCOPED_TRACE("problem " + std::to_string(k + 1));
-    EXPECT_EQ(problems[k]["index"], k);
-    EXPECT_NEAR(problems[k]["optimal_length"].get<double>(), kOptima[k], 1e-8);  // the file's value
-    EXPECT_NEAR(problems[k]["astar_length"].get<double>(), kOptima[k], 1e-9);    // A* under our rule
-    EXPECT_FALSE(problems[k]["mismatch"].get<bool>());
-    EXPECT_EQ(problems[k]["eaci_successes"], 2);
-    EXPECT_EQ(problems[k]["eaci_runs"].size(), 2u);
-    EXPECT_GE(problems[k]["eaci_length"].get<double>(), kOptima[k] - 1e-9);  // never shorter than the optimum
-    EXPECT_GE(problems[k]["eaci_gap_pct"].get<double>(), -1e-6);
+    EXPECT_EQ(astar[k]["problem"]["index"], k);
+    EXPECT_EQ(astar[k]["problem"]["problems_in_file"], 6);
+    EXPECT_NEAR(astar[k]["problem"]["optimal_length"].get<double>(), kOptima[k], 1e-8);  // the file's value
+    EXPECT_NEAR(astar[k]["run"]["length"].get<double>(), kOptima[k], 1e-9);              // A* under our rule
+    for (int seed = 1; seed <= 2; ++seed) {
+      const json& e = eaci[2 * k + static_cast<std::size_t>(seed) - 1];
+      EXPECT_EQ(e["problem"], astar[k]["problem"]);
+      EXPECT_EQ(e["seed"], seed);
+      EXPECT_TRUE(e["run"]["success"].get<bool>());
+      EXPECT_GE(e["run"]["length"].get<double>(), kOptima[k] - 1e-9);  // never shorter than the optimum
+    }
+    // Only what differs from the defaults: MovingAI's rule is the default one.
+    EXPECT_EQ(astar[k]["parameters"], json::object());
   }
-  EXPECT_EQ(problems[2]["start_xy"], json::array({1, 5}));
-  EXPECT_EQ(problems[2]["goal_xy"], json::array({4, 3}));
-  EXPECT_EQ(problems[5]["bucket"], 3);
-  const json& s = j["summary"];
-  EXPECT_EQ(s["problems_in_file"], 6);
-  EXPECT_EQ(s["problems_run"], 6);
-  EXPECT_EQ(s["mismatches"], 0);
-  EXPECT_EQ(s["astar_failures"], 0);
-  EXPECT_EQ(s["eaci_runs"], 12);
-  EXPECT_EQ(s["eaci_failures"], 0);
-  EXPECT_GE(s["worst_gap_pct"].get<double>(), s["median_gap_pct"].get<double>());
-  EXPECT_GT(s["median_time_ratio"].get<double>(), 0.0);
-  const std::string csv = readFile(dir_ / "report" / "scen.csv");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);  // header + 6 problems
-  EXPECT_NE(out_.find("6 of 6 problems, 0 A* mismatches"), std::string::npos) << out_;
+  EXPECT_EQ(astar[2]["problem"]["start"], json::array({5, 1}));  // (x 1, y 5) as [row, col]
+  EXPECT_EQ(astar[2]["problem"]["goal"], json::array({3, 4}));
+  EXPECT_EQ(astar[5]["problem"]["bucket"], 3);
+  EXPECT_NE(out_.find("scen.jsonl"), std::string::npos) << out_;
 }
 
-// Length bands by powers of two of the optimal length: 7, 7, 5 and 7.83 lie in [4, 8),
-// 9.83 and 11.24 in [8, 16).
-TEST_F(ScenTest, ProblemsAreGroupedIntoRouteLengthBands) {
-  const json j = runScen(kData + "/wall.scen", "--seeds 2");
-  const json& bands = j["length_bands"];
-  ASSERT_EQ(bands.size(), 2u);
-  EXPECT_EQ(bands[0]["optimal_length_from"], 4.0);
-  EXPECT_EQ(bands[0]["optimal_length_below"], 8.0);
-  EXPECT_EQ(bands[0]["problems"], 4);
-  EXPECT_EQ(bands[0]["eaci_runs"], 8);
-  EXPECT_EQ(bands[1]["optimal_length_from"], 8.0);
-  EXPECT_EQ(bands[1]["problems"], 2);
-  EXPECT_EQ(bands[1]["eaci_failures"], 0);
-  for (const json& b : bands) {
-    EXPECT_GE(b["worst_gap_pct"].get<double>(), b["median_gap_pct"].get<double>());
-    EXPECT_GE(b["max_time_ratio"].get<double>(), b["median_time_ratio"].get<double>());
-    EXPECT_GT(b["median_astar_ms"].get<double>(), 0.0);
-  }
-  const std::string md = readFile(dir_ / "report" / "scen.md");
-  EXPECT_NE(md.find("| 4–8 | 4 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 8–16 | 2 |"), std::string::npos) << md;
+// scripts/bench_report.py groups the problems by powers of two of the optimal length: 7, 7, 5
+// and 7.83 lie in [4, 8), 9.83 and 11.24 in [8, 16); 12 EACI runs, all solved.
+TEST_F(ScenTest, TheReportGroupsProblemsIntoRouteLengthBands) {
+  runScen(kData + "/wall.scen", "--seeds 2");
+  ASSERT_EQ(run("/usr/bin/python3", quote(EACI_SOURCE_DIR "/scripts/bench_report.py") + " --stdout --records " +
+                                        quote((dir_ / "report").string()) + " scen"), 0) << err_;
+  EXPECT_NE(out_.find("| 6 of 6 | 0 | 12/12 |"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("| 4–8 | 4 | 8/8 |"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("| 8–16 | 2 | 4/4 |"), std::string::npos) << out_;
 }
 
 TEST_F(ScenTest, EveryKthProblemAndMapDir) {
   // The scenario copied elsewhere: its map is found through --map-dir.
   fs::copy_file(kData + "/wall.scen", dir_ / "copy.scen");
-  const json j = runScen((dir_ / "copy.scen").string(), "--every 2 --map-dir " + quote(kData));
-  const json& problems = j["problems"];
-  ASSERT_EQ(problems.size(), 3u);  // problems 1, 3, 5
+  const std::vector<json> astar = ofVariant(runScen((dir_ / "copy.scen").string(), "--every 2 --map-dir " + quote(kData)), "astar");
+  ASSERT_EQ(astar.size(), 3u);  // problems 1, 3, 5
   for (std::size_t n = 0; n < 3; ++n) {
-    EXPECT_EQ(problems[n]["index"], 2 * n);
-    EXPECT_NEAR(problems[n]["astar_length"].get<double>(), kOptima[2 * n], 1e-9);
+    EXPECT_EQ(astar[n]["problem"]["index"], 2 * n);
+    EXPECT_NEAR(astar[n]["run"]["length"].get<double>(), kOptima[2 * n], 1e-9);
   }
-  EXPECT_EQ(j["summary"]["problems_in_file"], 6);
-  EXPECT_EQ(j["summary"]["problems_run"], 3);
-  EXPECT_EQ(j["summary"]["eaci_runs"], 3);
 }
 
 TEST_F(ScenTest, ParametersFromAFileButCornerCuttingStaysForbidden) {
   std::ofstream(dir_ / "params.yaml") << "ants: 7\nallow_corner_cutting: true\nearly_stop_iterations: 3\n";
-  const json j = runScen(kData + "/wall.scen", "--params " + quote((dir_ / "params.yaml").string()));
-  EXPECT_EQ(j["parameters"]["ants"], 7);
-  EXPECT_EQ(j["parameters"]["early_stop_iterations"], 3);
-  EXPECT_EQ(j["parameters"]["allow_corner_cutting"], false);  // MovingAI's rule
-  for (std::size_t k = 0; k < kOptima.size(); ++k)  // still the file's optima, not shorter corner-cutting routes
-    EXPECT_NEAR(j["problems"][k]["astar_length"].get<double>(), kOptima[k], 1e-9);
-  EXPECT_NE(readFile(dir_ / "report" / "scen.md").find("parameters of"), std::string::npos);
+  const std::vector<json> records = runScen(kData + "/wall.scen", "--params " + quote((dir_ / "params.yaml").string()));
+  ASSERT_EQ(records.size(), 2 * kOptima.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    EXPECT_EQ(records[k]["parameters"]["ants"], 7);
+    EXPECT_EQ(records[k]["parameters"]["early_stop_iterations"], 3);
+    EXPECT_FALSE(records[k]["parameters"].contains("allow_corner_cutting"));  // the default: forbidden
+    if (records[k]["variant"] == "astar") {  // still the file's optima, not shorter corner-cutting routes
+      EXPECT_NEAR(records[k]["run"]["length"].get<double>(), kOptima[k / 2], 1e-9);
+    }
+  }
   std::ofstream(dir_ / "bad.yaml") << "ants: 0\n";
   EXPECT_NE(run(kBench, "scen " + quote(kData + "/wall.scen") + " --params " + quote((dir_ / "bad.yaml").string())), 0);
   EXPECT_NE(err_.find("ants"), std::string::npos) << err_;
@@ -193,13 +192,11 @@ TEST_F(ScenTest, AnOptimumWithCornerCuttingIsAMismatch) {
   // Problem 3's length if corners could be cut (3 + √2): A* (no corner cutting) finds 5.
   fs::copy_file(kData + "/wall.map", dir_ / "wall.map");
   std::ofstream(dir_ / "cut.scen") << "version 1\n0\twall.map\t8\t6\t0\t0\t7\t0\t7\n1\twall.map\t8\t6\t1\t5\t4\t3\t4.41421356\n";
-  const json j = runScen((dir_ / "cut.scen").string(), "", 1);
-  ASSERT_EQ(j["problems"].size(), 2u);
-  EXPECT_FALSE(j["problems"][0]["mismatch"].get<bool>());
-  EXPECT_TRUE(j["problems"][1]["mismatch"].get<bool>());
-  EXPECT_NEAR(j["problems"][1]["astar_diff"].get<double>(), 5.0 - 4.41421356, 1e-9);
-  EXPECT_EQ(j["summary"]["mismatches"], 1);
+  const std::vector<json> astar = ofVariant(runScen((dir_ / "cut.scen").string(), "", 1), "astar");
+  ASSERT_EQ(astar.size(), 2u);
+  EXPECT_NEAR(astar[1]["run"]["length"].get<double>(), 5.0, 1e-9);
   EXPECT_NE(err_.find("mismatch on problem 2 (line 3)"), std::string::npos) << err_;
+  EXPECT_EQ(err_.find("mismatch on problem 1"), std::string::npos) << err_;
 }
 
 TEST_F(ScenTest, ProblemsThatDoNotFitTheMapAreRefused) {
@@ -216,7 +213,7 @@ TEST_F(ScenTest, ProblemsThatDoNotFitTheMapAreRefused) {
 }
 
 TEST_F(ScenTest, EaciPlanReadsTheMovingAiMap) {
-  if (!fs::exists(kPlan)) GTEST_SKIP() << "eaci_plan not built";
+  ASSERT_TRUE(fs::exists(kPlan)) << "eaci_plan not built: " << kPlan;
   const std::string map = quote(kData + "/wall.map");
   const fs::path report = dir_ / "plan.json";
   // Problem 4, (x 0, y 0) -> (x 0, y 5): --start and --goal are ROW,COL.

@@ -132,7 +132,10 @@ double recomputedLength(const json& path) {
   return length;
 }
 
-// A* lengths of maps/paper/README.md.
+// A paper map's optima (maps/paper/paper_maps.json).
+eaci::paper::PaperMap optimum(const std::string& name) { return eaci::paper::paperMapNamed(eaci::test::mapsDir(), name); }
+
+// A* lengths of the paper maps.
 struct AStarCase {
   const char* map;
   const char* start;
@@ -143,10 +146,10 @@ struct AStarCase {
 
 TEST_F(CliTest, AStarReproducesPaperOptima) {
   const AStarCase cases[] = {
-      {"paper-20x20.txt", "0,0", "19,19", true, 30.9706},
-      {"paper-20x20.txt", "0,0", "19,19", false, 33.3137},
-      {"paper-30x30.txt", "29,0", "0,29", true, 44.5269},
-      {"paper-40x40.txt", "0,0", "39,39", true, 58.0833},
+      {"paper-20x20.txt", "0,0", "19,19", true, optimum("paper-20x20").optimum_corner_cutting},
+      {"paper-20x20.txt", "0,0", "19,19", false, optimum("paper-20x20").optimum_no_corner_cutting},
+      {"paper-30x30.txt", "29,0", "0,29", true, optimum("paper-30x30").optimum_corner_cutting},
+      {"paper-40x40.txt", "0,0", "39,39", true, optimum("paper-40x40").optimum_corner_cutting},
   };
   for (const AStarCase& c : cases) {
     SCOPED_TRACE(std::string(c.map) + (c.corner_cutting ? " corner cutting" : " no corner cutting"));
@@ -223,7 +226,7 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
     }
   }
   EXPECT_NEAR(j["length"].get<double>(), recomputedLength(path), 1e-9);
-  EXPECT_GE(j["length"].get<double>(), 33.3137 - 1e-3);  // never shorter than the optimum
+  EXPECT_GE(j["length"].get<double>(), optimum("paper-20x20").optimum_no_corner_cutting - 1e-3);  // never shorter than the optimum
   ASSERT_EQ(j["path_xy"].size(), path.size());
   EXPECT_DOUBLE_EQ(j["path_xy"][0][0].get<double>(), 0.5);   // centre of (0, 0) on a 20-row map
   EXPECT_DOUBLE_EQ(j["path_xy"][0][1].get<double>(), 19.5);
@@ -294,7 +297,7 @@ TEST_F(CliTest, ClassicAcoFindsAPath) {
   EXPECT_EQ(j["algorithm"], "aco");
   EXPECT_EQ(j["path"].front(), json::array({0, 0}));
   EXPECT_EQ(j["path"].back(), json::array({19, 19}));
-  EXPECT_GE(j["length"].get<double>(), 30.9706 - 1e-3);
+  EXPECT_GE(j["length"].get<double>(), optimum("paper-20x20").optimum_corner_cutting - 1e-3);
 }
 
 TEST_F(CliTest, ParamsFileThenSetThenSeed) {

@@ -19,6 +19,7 @@
 
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/io/map_io.hpp"
+#include "../src/common/paper_maps.hpp"
 
 namespace eaci::test {
 
@@ -35,7 +36,8 @@ inline CostGrid paperMap(const std::string& name, bool allow_corner_cutting) {
   return CostGrid::fromView(map.view(), allow_corner_cutting);
 }
 
-// The paper maps with their start and goal cells and optima (maps/paper/README.md).
+// The maps of the paper's Tables 1-3 with their start and goal cells and optima, from
+// maps/paper/paper_maps.json (the one source of these numbers; a missing file fails).
 struct PaperCase {
   std::string file;
   Cell start;
@@ -45,12 +47,14 @@ struct PaperCase {
 };
 
 inline const std::vector<PaperCase>& paperCases() {
-  static const std::vector<PaperCase> cases = {
-      {"paper-20x20.txt", {0, 0}, {19, 19}, 30.9706, 33.3137},
-      {"paper-30x30.txt", {29, 0}, {0, 29}, 44.5269, 48.0416},
-      {"paper-40x40.txt", {0, 0}, {39, 39}, 58.0833, -1.0},
-      {"paper-50x50.txt", {49, 0}, {0, 49}, 72.8112, 82.1838},
-  };
+  static const std::vector<PaperCase> cases = [] {
+    std::vector<PaperCase> out;
+    for (const paper::PaperMap& m : paper::loadPaperMaps(mapsDir()))
+      if (!m.table.empty())
+        out.push_back({m.file(), m.start, m.goal, m.optimum_corner_cutting,
+                       std::isfinite(m.optimum_no_corner_cutting) ? m.optimum_no_corner_cutting : -1.0});
+    return out;
+  }();
   return cases;
 }
 

@@ -2,7 +2,7 @@
 // references: the route the robot would drive (the grid route, or the smoothed route's straight
 // segments), its cost, length, turning, clearance, mean cell cost and the lethal / inscribed
 // cells it enters; a weighted Dijkstra written from first principles (the independent check of
-// A*'s cost); the median / worst of the cost gaps. Header-only on the core alone, so that
+// A*'s cost). Header-only on the core alone, so that
 // test/test_bench_cost_checks.cpp can check it by hand.
 #pragma once
 
@@ -151,33 +151,6 @@ inline double dijkstraCost(const CostBytes& map, eaci::Cell start, eaci::Cell go
 inline double costGapPct(double cost, double reference) {
   if (!std::isfinite(cost) || !(reference > 0)) return std::numeric_limits<double>::infinity();
   return (cost / reference - 1.0) * 100.0;
-}
-
-// Median and worst of a set of gaps (a failed run's +infinity is the worst); the targets of
-// issue #10: median <= 1 %, worst <= 3 %.
-struct GapSummary {
-  int count = 0;
-  double median = std::numeric_limits<double>::quiet_NaN();
-  double worst = std::numeric_limits<double>::quiet_NaN();
-  bool meets(double median_limit, double worst_limit) const {
-    return count > 0 && median <= median_limit && worst <= worst_limit;
-  }
-};
-
-inline double medianOf(std::vector<double> values) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
-}
-
-inline GapSummary summarizeGaps(const std::vector<double>& gaps) {
-  GapSummary s;
-  s.count = static_cast<int>(gaps.size());
-  if (gaps.empty()) return s;
-  s.median = medianOf(gaps);
-  s.worst = *std::max_element(gaps.begin(), gaps.end());
-  return s;
 }
 
 }  // namespace eaci_bench

@@ -1,43 +1,62 @@
-#include "costs.hpp"
-
+// `costs`: cost-aware planning on inflated cost maps (issue #10): the lab with the move_base
+// config's inflation and generated rooms and clutter maps; A* and EACI, smoothed or not, one
+// thread, each plan in a child process; the driven routes checked and A*'s cost set beside an
+// independent weighted Dijkstra (cost_checks.hpp).
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <limits>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
-#include "costs_report.hpp"
+#include "cost_checks.hpp"
 #include "eaci/io/map_io.hpp"
+#include "eaci/search/astar.hpp"
 #include "forked_run.hpp"
-#include "plan_runner.hpp"
 #include "progress.hpp"
-#include "provenance.hpp"
-#include "report_format.hpp"
+#include "record.hpp"
+#include "studies.hpp"
 
 namespace eaci_bench {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr int kMaxMapAttempts = 100;
-
-// A map to plan on: its inflated costs, the grids the checks read, start and goal.
-struct PreparedMap {
-  CostBytes costs;
-  eaci::GridView view;          // over costs.bytes, read as the planners read a costmap
-  eaci::CostGrid planning;      // >= 253 blocked, the rest weighted
-  eaci::CostGrid obstacles;     // the map's own obstacles (clearance)
+struct CostVariant {
+  std::string key;
+  eaci::Algorithm algorithm;
+  bool smooth;
 };
 
-void prepare(PreparedMap& m, const eaci::OccupancyMap& map, const eaci::InflationParameters& inflation,
-             double resolution) {
+const std::vector<CostVariant> kCostVariants = {
+    {"astar", eaci::Algorithm::kAStar, false},
+    {"astar-smoothed", eaci::Algorithm::kAStar, true},
+    {"eaci", eaci::Algorithm::kEaci, false},
+    {"eaci-smoothed", eaci::Algorithm::kEaci, true},
+};
+
+// A start and goal on the lab map, metres: the five goals of docs/ros.md's move_base runs from
+// (0.4, 0.4), and three crossings.
+struct LabPair {
+  double start_x, start_y, goal_x, goal_y;
+  const char* note;
+};
+
+const std::vector<LabPair> kLabPairs = {
+    {0.4, 0.4, 4.4, 2.6, ""},           {0.4, 0.4, 2.45, 1.5, "in the U"},  {0.4, 0.4, 1.1, 2.2, "behind the L"},
+    {0.4, 0.4, 4.2, 0.5, "past the cubes"}, {0.4, 0.4, 0.5, 2.6, ""},       {4.4, 2.6, 0.5, 2.6, "along the top"},
+    {1.1, 2.2, 4.2, 0.5, "diagonal"},   {2.45, 1.5, 4.4, 2.6, "out of the U"},
+};
+
+// A map to plan on: its inflated costs, the grids the checks read.
+struct PreparedMap {
+  CostBytes costs;
+  eaci::GridView view;       // over costs.bytes, read as the planners read a costmap
+  eaci::CostGrid planning;   // >= 253 blocked, the rest weighted
+  eaci::CostGrid obstacles;  // the map's own obstacles (clearance)
+};
+
+void prepare(PreparedMap& m, const eaci::OccupancyMap& map, const eaci::InflationParameters& inflation, double resolution) {
   const eaci::Parameters defaults;
   const eaci::UnknownPolicy unknown = defaults.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
-  m.costs.width = map.width;
-  m.costs.height = map.height;
-  m.costs.bytes = eaci::inflatedCosts(map.view(unknown), resolution, inflation);
+  m.costs = CostBytes{map.width, map.height, eaci::inflatedCosts(map.view(unknown), resolution, inflation)};
   m.view = eaci::GridView(m.costs.bytes.data(), map.width, map.height, eaci::RowOrder::kTopFirst,
                           eaci::inflatedCostsInterpretation(defaults.allow_unknown));
   m.planning = eaci::CostGrid::fromView(m.view, defaults.allow_corner_cutting, eaci::costRule(defaults));
@@ -56,222 +75,131 @@ std::string metres(double x, double y) {
   return text;
 }
 
+nlohmann::json finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
 class CostsRunner {
  public:
-  explicit CostsRunner(const CostsOptions& options) : options_(options), progress_("costs") {}
+  CostsRunner(const CostsOptions& options, RecordWriter& out) : o_(options), out_(out), progress_("costs") {}
 
-  std::vector<CostGroup> run() {
-    std::vector<CostGroup> groups;
-    if (!options_.lab_map.empty()) groups.push_back(runLab());
-    for (MapKind kind : options_.kinds)
-      for (int size : options_.sizes) groups.push_back(runGenerated(kind, size));
-    progress_.finish();
-    return groups;
-  }
-
- private:
-  CostGroup runLab() {
-    CostGroup group;
-    group.name = "lab";
-    group.lab = true;
-    const eaci::OccupancyMap map = eaci::loadMap(options_.lab_map);
-    group.size = map.width;
-    group.resolution = map.resolution;
+  void lab() {
+    const eaci::OccupancyMap map = eaci::loadMap(o_.lab_map);
     PreparedMap prepared;
-    prepare(prepared, map, options_.lab_inflation, map.resolution);
-    const std::vector<LabPair> pairs = defaultLabPairs();
-    for (std::size_t p = 0; p < pairs.size(); ++p) {
-      const LabPair& pair = pairs[p];
-      CostProblem problem;
-      problem.name = metres(pair.start_x, pair.start_y) + " → " + metres(pair.goal_x, pair.goal_y) +
-                     (pair.note.empty() ? "" : " " + pair.note);
+    prepare(prepared, map, o_.lab_inflation, map.resolution);
+    for (std::size_t p = 0; p < kLabPairs.size(); ++p) {
+      const LabPair& pair = kLabPairs[p];
+      const std::string name = metres(pair.start_x, pair.start_y) + " → " + metres(pair.goal_x, pair.goal_y) +
+                               (*pair.note ? std::string(" ") + pair.note : "");
       const auto start = map.worldToCell({pair.start_x, pair.start_y});
       const auto goal = map.worldToCell({pair.goal_x, pair.goal_y});
       if (!start || !goal || !prepared.planning.isFree(*start) || !prepared.planning.isFree(*goal))
-        throw std::runtime_error("lab pair " + problem.name + ": start or goal off the map or in an inflated obstacle");
-      problem.start = *start;
-      problem.goal = *goal;
-      solve(group, problem, prepared, options_.lab_seeds, /*keep_paths=*/true);
-      if (p == 0) problem.example_costs = prepared.costs;
-      group.problems.push_back(std::move(problem));
+        throw std::runtime_error("lab pair " + name + ": start or goal off the map or in an inflated obstacle");
+      nlohmann::json problem = {{"group", "lab"}, {"name", name}, {"size", map.width}, {"resolution", map.resolution}};
+      if (p == 0) problem["costs"] = prepared.costs.bytes;  // the figure's cost map
+      for (int k = 1; k <= o_.lab_seeds; ++k)
+        runSeed("lab", problem, prepared, *start, *goal, static_cast<std::uint64_t>(k), k == 1, k, o_.lab_seeds);
     }
-    return group;
   }
 
-  CostGroup runGenerated(MapKind kind, int size) {
-    CostGroup group;
-    group.name = std::string(toString(kind)) + " " + std::to_string(size);
-    group.kind = kind;
-    group.size = size;
-    const int seeds = costsSeedsFor(size, options_.runs);
+  void generated(MapKind kind, int size) {
+    const std::string group = std::string(toString(kind)) + " " + std::to_string(size);
+    const int seeds = o_.runs > 0 ? o_.runs : size <= 400 ? 20 : 10;
     std::set<std::uint64_t> used;  // generateMap moves to the next seed when one fails: no map twice
     for (int k = 1; k <= seeds; ++k) {
       GeneratedMap g;
       PreparedMap prepared;
       bool found = false;
       std::vector<std::uint64_t> redrawn;
-      for (int attempt = 0; attempt < kMaxMapAttempts && !found; ++attempt) {
-        g = generateMap(kind, size, static_cast<std::uint64_t>(k) + 10000ULL * static_cast<std::uint64_t>(attempt),
-                        options_.generator);
+      for (int attempt = 0; attempt < 100 && !found; ++attempt) {
+        g = generateMap(kind, size, static_cast<std::uint64_t>(k) + 10000ULL * static_cast<std::uint64_t>(attempt), o_.generator);
         if (used.count(g.seed_used)) continue;
-        prepare(prepared, g.map, options_.generated_inflation, 1.0);
+        prepare(prepared, g.map, o_.generated_inflation, 1.0);
         found = prepared.planning.isFree(g.start) && prepared.planning.isFree(g.goal) &&
                 eaci::cheapestPath(prepared.planning, g.start, g.goal).found;
         if (!found) redrawn.push_back(g.seed_used);
       }
-      if (!found) throw std::runtime_error("no connected inflated " + group.name + " map for seed " + std::to_string(k));
-      if (!redrawn.empty()) {
-        std::ostringstream note;
-        note << "seed " << k << ": map seed" << (redrawn.size() > 1 ? "s " : " ");
-        for (std::size_t i = 0; i < redrawn.size(); ++i) note << (i ? ", " : "") << redrawn[i];
-        note << " had no route once inflated; used map seed " << g.seed_used;
-        addNote(group, note.str());
-      }
+      if (!found) throw std::runtime_error("no connected inflated " + group + " map for seed " + std::to_string(k));
       used.insert(g.seed_used);
-      CostProblem problem;
-      problem.name = group.name + " seed " + std::to_string(g.seed_used);
-      problem.map_seed = static_cast<std::uint64_t>(k);
-      problem.map_seed_used = g.seed_used;
-      problem.start = g.start;
-      problem.goal = g.goal;
-      problem.obstacle_fraction = g.obstacle_fraction;
-      const bool example = k == 1 && size <= options_.example_max_size;
-      solveOneSeed(group, problem, prepared, static_cast<std::uint64_t>(k), example);
-      if (example) problem.example_costs = prepared.costs;
-      group.problems.push_back(std::move(problem));
+      const bool example = k == 1 && size <= o_.example_max_size;
+      nlohmann::json problem = {{"group", group}, {"name", group + " seed " + std::to_string(g.seed_used)},
+                                {"kind", toString(kind)}, {"size", size}, {"resolution", 1.0},
+                                {"map_seed", k}, {"map_seed_used", g.seed_used}, {"redrawn_map_seeds", redrawn},
+                                {"obstacle_fraction", g.obstacle_fraction}};
+      if (example) problem["costs"] = prepared.costs.bytes;
+      runSeed(group, problem, prepared, g.start, g.goal, static_cast<std::uint64_t>(k), example, k, seeds);
     }
-    return group;
   }
 
-  // Lab pairs: seeds 1..seeds on the same map.
-  void solve(CostGroup& group, CostProblem& problem, const PreparedMap& prepared, int seeds, bool keep_paths) {
-    startProblem(problem, prepared);
-    for (int k = 1; k <= seeds; ++k) runSeed(group, problem, prepared, static_cast<std::uint64_t>(k), keep_paths && k == 1, k, seeds);
-    finishProblem(group, problem);
-  }
+  void finish() { progress_.finish(); }
 
-  // Generated maps: one seed per map.
-  void solveOneSeed(CostGroup& group, CostProblem& problem, const PreparedMap& prepared, std::uint64_t seed, bool keep_paths) {
-    startProblem(problem, prepared);
-    runSeed(group, problem, prepared, seed, keep_paths, static_cast<int>(problem.map_seed), costsSeedsFor(group.size, options_.runs));
-    finishProblem(group, problem);
-  }
-
-  void startProblem(CostProblem& problem, const PreparedMap& prepared) {
-    problem.dijkstra_cost = dijkstraCost(prepared.costs, problem.start, problem.goal);
-    problem.blocked_fraction = blockedFraction(prepared.costs);
-    for (const CostVariant& v : costVariants()) problem.variants.push_back(CostVariantRuns{v, {}});
-  }
-
-  void runSeed(CostGroup& group, CostProblem& problem, const PreparedMap& prepared, std::uint64_t seed, bool keep_paths,
-               int k, int n) {
-    for (CostVariantRuns& v : problem.variants) {
-      progress_.show(group.name + " | " + toString(v.variant.key), k, n);
+ private:
+  // The four planners on one problem with one seed; gaps and time ratios against this seed's A*.
+  void runSeed(const std::string& group, nlohmann::json problem, const PreparedMap& prepared, eaci::Cell start,
+               eaci::Cell goal, std::uint64_t seed, bool keep_paths, int k, int n) {
+    problem["start"] = start;
+    problem["goal"] = goal;
+    problem["dijkstra_cost"] = finite(dijkstraCost(prepared.costs, start, goal));
+    problem["blocked_fraction"] = blockedFraction(prepared.costs);
+    std::vector<Record> records;
+    for (const CostVariant& v : kCostVariants) {
+      progress_.show(group + " | " + v.key, k, n);
       eaci::Parameters params;
       params.seed = seed;
       params.threads = 1;
-      params.smooth_path = v.variant.smooth;
-      const PlanRequest request{prepared.view, problem.start, problem.goal, v.variant.algorithm, params,
-                                v.variant.algorithm == eaci::Algorithm::kAStar ? 0.0 : options_.budget_s * 1000.0};
-      const ForkedResult child = runForked([&] { return toJson(timedPlan(request), false, true).dump(); });
-      if (!child.ok) throw std::runtime_error(std::string(toString(v.variant.key)) + " on " + problem.name + ": " + child.error);
-      CostRun run;
-      run.record = runRecordFromJson(nlohmann::json::parse(child.output));
-      run.peak_rss_mb = child.peak_rss_mb;
-      if (run.record.success) run.driven = checkRoute(prepared.planning, prepared.obstacles, prepared.costs, run.record.smoothed_path);
-      if (run.record.interrupted) addNote(group, problem.name + ": " + v.variant.label + " seed " + std::to_string(seed) +
-                                                     " hit the " + fixed(options_.budget_s, 0) + " s budget (capped)");
-      v.runs.push_back(std::move(run));
-    }
-    // Gaps and ratios against this seed's A* run; smoothed routes against their unsmoothed twin.
-    const CostRun& astar = problem.variants.front().runs.back();
-    for (CostVariantRuns& v : problem.variants) {
-      CostRun& run = v.runs.back();
-      run.time_ratio = astar.record.time_ms > 0 ? run.record.time_ms / astar.record.time_ms : kInfinity;
-      run.gap_pct = run.record.success ? costGapPct(run.driven.cost, astar.record.cost) : kInfinity;
-      if (v.variant.smooth)
-        for (const CostVariantRuns& twin : problem.variants)
-          if (!twin.variant.smooth && twin.variant.algorithm == v.variant.algorithm)
-            run.same_grid_route = twin.runs.back().record.path == run.record.path;
-    }
-    if (!keep_paths)
-      for (CostVariantRuns& v : problem.variants) {
-        RunRecord& record = v.runs.back().record;
-        record.path.clear();
-        record.smoothed_path.clear();
-        record.islands.clear();
+      params.smooth_path = v.smooth;
+      const PlanRequest request{prepared.view, start, goal, v.algorithm, params,
+                                v.algorithm == eaci::Algorithm::kAStar ? 0.0 : o_.budget_s * 1000.0};
+      const ForkedResult child = runForked([&] { return timedPlan(request, false, true).dump(); });
+      if (!child.ok) throw std::runtime_error(v.key + " on " + problem["name"].get<std::string>() + ": " + child.error);
+      Record r;
+      r.map = group;
+      r.variant = v.key;
+      r.params = params;
+      r.run = nlohmann::json::parse(child.output);
+      r.extra["peak_rss_mb"] = child.peak_rss_mb;
+      if (r.run["success"].get<bool>()) {  // the route the robot would drive: the smoothed one when smoothing is on
+        const RouteCheck c = checkRoute(prepared.planning, prepared.obstacles, prepared.costs, routeOf(r.run, true));
+        r.extra["driven"] = {{"cost", finite(c.cost)}, {"length", finite(c.length)}, {"turn_deg", c.turn_deg},
+                             {"min_clearance", finite(c.min_clearance)}, {"mean_cell_cost", finite(c.mean_cell_cost)},
+                             {"lethal_cells", c.lethal_cells}, {"inscribed_cells", c.inscribed_cells}};
       }
+      records.push_back(std::move(r));
+    }
+    const double astar_ms = records.front().run["time_ms"].get<double>();
+    const double astar_cost = records.front().run["cost"].is_number() ? records.front().run["cost"].get<double>() : INFINITY;
+    for (Record& r : records) {
+      r.problem = problem;
+      const bool success = r.run["success"].get<bool>();
+      r.extra["time_ratio"] = finite(astar_ms > 0 ? r.run["time_ms"].get<double>() / astar_ms : INFINITY);
+      r.extra["gap_pct"] = finite(success ? costGapPct(r.extra["driven"]["cost"].get<double>(), astar_cost) : INFINITY);
+      if (r.variant.size() > 9 && r.variant.compare(r.variant.size() - 9, 9, "-smoothed") == 0)  // against its twin
+        for (const Record& twin : records)
+          if (twin.variant + "-smoothed" == r.variant) r.extra["same_grid_route"] = twin.run["path"] == r.run["path"];
+    }
+    for (Record& r : records) {  // the cells only for the figures' examples
+      if (!keep_paths)
+        for (const char* key : {"path", "smoothed_path", "islands"}) r.run.erase(key);
+      out_.append(r);
+    }
   }
 
-  void finishProblem(CostGroup& group, CostProblem& problem) {
-    const CostVariantRuns& astar = problem.variants.front();
-    problem.astar_cost = astar.runs.empty() ? kInfinity : astar.runs.front().record.cost;
-    if (!(std::abs(problem.astar_cost - problem.dijkstra_cost) <= 1e-6 * std::max(1.0, problem.dijkstra_cost)))
-      addNote(group, problem.name + ": A* cost " + fixed(problem.astar_cost, 6) + " differs from Dijkstra's " +
-                         fixed(problem.dijkstra_cost, 6));
-    for (const CostVariantRuns& v : problem.variants)
-      for (const CostRun& run : v.runs) {
-        if (!run.record.success) addNote(group, problem.name + ": " + v.variant.label + " seed " + std::to_string(run.record.seed) + " found no route");
-        if (run.driven.lethal_cells + run.driven.inscribed_cells > 0)
-          addNote(group, problem.name + ": " + v.variant.label + " seed " + std::to_string(run.record.seed) + " enters " +
-                             std::to_string(run.driven.lethal_cells) + " lethal and " +
-                             std::to_string(run.driven.inscribed_cells) + " inscribed cells");
-        if (v.variant.smooth && !run.same_grid_route)
-          addNote(group, problem.name + ": " + v.variant.label + " seed " + std::to_string(run.record.seed) +
-                             " smoothed a different grid route than its unsmoothed twin");
-      }
-  }
-
-  void addNote(CostGroup& group, const std::string& note) {
-    group.notes.push_back(note);
-    progress_.note(group.name + ": " + note);
-  }
-
-  const CostsOptions& options_;
+  const CostsOptions& o_;
+  RecordWriter& out_;
   Progress progress_;
 };
 
 }  // namespace
 
-std::vector<LabPair> defaultLabPairs() {
-  return {
-      {0.4, 0.4, 4.4, 2.6, ""},
-      {0.4, 0.4, 2.45, 1.5, "in the U"},
-      {0.4, 0.4, 1.1, 2.2, "behind the L"},
-      {0.4, 0.4, 4.2, 0.5, "past the cubes"},
-      {0.4, 0.4, 0.5, 2.6, ""},
-      {4.4, 2.6, 0.5, 2.6, "along the top"},
-      {1.1, 2.2, 4.2, 0.5, "diagonal"},
-      {2.45, 1.5, 4.4, 2.6, "out of the U"},
-  };
-}
-
-int costsSeedsFor(int size, int requested) {
-  if (requested > 0) return requested;
-  return size <= 400 ? 20 : 10;
-}
-
-std::vector<CostVariant> costVariants() {
-  return {
-      {VariantKey::kAStar, "A*", eaci::Algorithm::kAStar, false},
-      {VariantKey::kAStarSmoothed, "A*, smoothed", eaci::Algorithm::kAStar, true},
-      {VariantKey::kEaci1t, "EACI", eaci::Algorithm::kEaci, false},
-      {VariantKey::kEaciSmoothed1t, "EACI, smoothed", eaci::Algorithm::kEaci, true},
-  };
-}
-
-int runCostsCommand(CostsOptions options) {
+void runCosts(CostsOptions options, RecordWriter& out) {
   if (options.quick) {
     options.sizes = {100, 200};
     if (options.runs == 0) options.runs = 2;
     options.lab_seeds = std::min(options.lab_seeds, 2);
   }
-  const Provenance provenance = collectProvenance(options.command_line);
-  CostsRunner runner(options);
-  const std::vector<CostGroup> groups = runner.run();
-  writeReport(options.out_dir, "costs",
-              {costsJson(groups, options, provenance), costsCsv(groups), costsMarkdown(groups, options, provenance), {}});
-  return 0;
+  CostsRunner runner(options, out);
+  if (!options.lab_map.empty()) runner.lab();
+  for (MapKind kind : options.kinds)
+    for (int size : options.sizes) runner.generated(kind, size);
+  runner.finish();
 }
 
 }  // namespace eaci_bench

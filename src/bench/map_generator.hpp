@@ -3,7 +3,7 @@
 //   rooms   - a grid of rooms 10-20 cells wide, separated by 1-cell walls with a 2-3 cell
 //             door into every neighbouring room (both ranges: GeneratorOptions);
 //   clutter - random rectangular blocks covering 20-30 % of the map, the corners kept free;
-//   maze    - a perfect maze (maze.hpp) with corridors and walls of GeneratorOptions' widths;
+//   maze    - a perfect maze (drawMaze in map_generator.cpp) with corridors and walls of GeneratorOptions' widths;
 //             the goal is the last free corner (bottom-right unless the size leaves a margin).
 // A map whose start and goal are not connected (checked with A*) is drawn again with the
 // next seed.

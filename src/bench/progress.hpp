@@ -1,31 +1,26 @@
-// Progress on stderr: one line that updates in place on a terminal, one line per finished
-// stage when stderr is a file or a pipe.
+// Progress on stderr: a line per finished stage, "<command> | <stage> | run n/n | 12.3 s".
 #pragma once
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 namespace eaci_bench {
 
 class Progress {
  public:
-  explicit Progress(std::string command);
+  explicit Progress(std::string command) : command_(std::move(command)), start_(std::chrono::steady_clock::now()) {}
 
-  // "<command> | <stage> | run k/n | 12.3 s"
-  void show(const std::string& stage, int k, int n);
-  // A line of its own (notes, warnings), above the progress line.
-  void note(const std::string& line);
-  // Ends the progress line.
-  void finish();
-
-  double elapsedSeconds() const;
+  void show(const std::string& stage, int k, int n) const {
+    if (k == n) std::fprintf(stderr, "%s | %s | run %d/%d | %.1f s\n", command_.c_str(), stage.c_str(), k, n, seconds());
+  }
+  void note(const std::string& line) const { std::fprintf(stderr, "%s: %s\n", command_.c_str(), line.c_str()); }
+  void finish() const { std::fprintf(stderr, "%s: done in %.1f s\n", command_.c_str(), seconds()); }
 
  private:
-  void clearLine();
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
   std::string command_;
-  bool terminal_;
-  bool line_open_ = false;
   std::chrono::steady_clock::time_point start_;
 };
 
