@@ -6,6 +6,7 @@
 #include "eaci/aco/geodesic_islands.hpp"
 #include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/solvers.hpp"
+#include "eaci/planner/parameters.hpp"
 #include "eaci/search/astar.hpp"
 #include "test_support.hpp"
 
