@@ -15,9 +15,12 @@
 #include <thread>
 
 #include "eaci/io/map_io.hpp"
+#include "map_pose.hpp"
 #include "route_check.hpp"
 
 namespace {
+
+using eaci_test::mapPose;
 
 // The long node runs a huge number of iterations with no early stop and no time limit; the
 // short node the same map and parameters but few iterations, to time an iteration.
@@ -26,15 +29,6 @@ const std::string kShort = "/eaci_planner_short";
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-geometry_msgs::PoseStamped pose(double x, double y) {
-  geometry_msgs::PoseStamped p;
-  p.header.frame_id = "map";
-  p.pose.position.x = x;
-  p.pose.position.y = y;
-  p.pose.orientation.w = 1.0;
-  return p;
-}
 
 struct Answer {
   bool called = false;
@@ -50,8 +44,8 @@ std::shared_future<Answer> planInBackground(const std::string& node) {
   std::shared_future<Answer> future = promise->get_future().share();
   std::thread([node, promise] {
     nav_msgs::GetPlan srv;
-    srv.request.start = pose(0.425, 0.425);
-    srv.request.goal = pose(4.425, 2.625);
+    srv.request.start = mapPose(0.425, 0.425);
+    srv.request.goal = mapPose(4.425, 2.625);
     const auto begin = Clock::now();
     Answer answer;
     answer.called = ros::service::call(node + "/make_plan", srv);

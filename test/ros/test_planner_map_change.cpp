@@ -14,20 +14,14 @@
 #include "eaci/io/occupancy_map.hpp"
 #include "grid_conversion.hpp"
 #include "node_log.hpp"
+#include "map_pose.hpp"
 #include "route_check.hpp"
 
 namespace {
 
-const char* kService = "/eaci_planner_node/make_plan";
+using eaci_test::mapPose;
 
-geometry_msgs::PoseStamped pose(double x, double y) {
-  geometry_msgs::PoseStamped p;
-  p.header.frame_id = "map";
-  p.pose.position.x = x;
-  p.pose.position.y = y;
-  p.pose.orientation.w = 1.0;
-  return p;
-}
+const char* kService = "/eaci_planner_node/make_plan";
 
 // A walled room of `width` x `height` cells at 0.1 m with its bottom-left corner at `origin`;
 // `wall_col` >= 0 adds a wall across the room at that column with a one-cell door at
@@ -57,7 +51,7 @@ class MapChange : public ::testing::Test {
     // ("no map yet" before the first) until a line arrives.
     bool connected = false;
     for (int k = 0; k < 50 && !connected; ++k) {
-      plan(pose(-100.0, -100.0), pose(0.35, 0.35));
+      plan(mapPose(-100.0, -100.0), mapPose(0.35, 0.35));
       connected = !log_.waitFor({}, 0.2).empty();
     }
     ASSERT_TRUE(connected) << "no warning of eaci_planner_node on /rosout";
@@ -103,38 +97,38 @@ TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
   // 1. A 3 x 2 m room at the origin, open.
   const eaci::OccupancyMap small = room(30, 20, {0.0, 0.0});
   publish(small);
-  auto response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  auto response = plan(mapPose(0.35, 0.35), mapPose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
   // A goal beyond this map is refused as off it.
-  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
 
   // 2. The map grows to 6 x 4 m and its origin moves to (-1, -1) (the same world point is now
   //    another cell); a wall with a door at the top now stands at x = 1.55 m, across the straight
   //    line of the first route. The goal off the first map is now reachable.
   const eaci::OccupancyMap grown = room(60, 40, {-1.0, -1.0}, /*wall_col=*/25, /*door_row=*/5);
   publish(grown);
-  response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  response = plan(mapPose(0.35, 0.35), mapPose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(grown, response.plan, 0.35, 0.35, 2.55, 1.55), "");
   // Through the door (row 5 from the top: y = -1 + (40 - 5 - 0.5) x 0.1 = 2.45 m).
   double highest = -1e9;
   for (const auto& p : response.plan.poses) highest = std::max(highest, p.pose.position.y);
   EXPECT_GT(highest, 2.35) << "the route did not go through the door of the new wall";
-  response = plan(pose(0.35, 0.35), pose(4.55, 1.55));
+  response = plan(mapPose(0.35, 0.35), mapPose(4.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(grown, response.plan, 0.35, 0.35, 4.55, 1.55), "");
 
   // 2b. The same wall without its door: the far goal is on the map and free, but unreachable.
   publish(room(60, 40, {-1.0, -1.0}, /*wall_col=*/25));
-  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "cannot be reached from start");
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "cannot be reached from start");
 
   // 3. The map shrinks again (a rolling window moving away): the far goal is refused, the near
   //    one is planned on the small map's cells, and a start now off the map is refused.
   publish(small);
-  expectRefusedWith(pose(0.35, 0.35), pose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
-  expectRefusedWith(pose(-0.55, -0.55), pose(1.55, 1.55), "start (-0.550, -0.550) is off the costmap");
-  response = plan(pose(0.35, 0.35), pose(2.55, 1.55));
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
+  expectRefusedWith(mapPose(-0.55, -0.55), mapPose(1.55, 1.55), "start (-0.550, -0.550) is off the costmap");
+  response = plan(mapPose(0.35, 0.35), mapPose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
 }
@@ -149,7 +143,7 @@ TEST_F(MapChange, AMapArrivingDuringAPlanIsUsedByTheNextPlan) {
   std::atomic<bool> planned{false};
   nav_msgs::GetPlan::Response during;
   std::thread request([&] {
-    during = plan(pose(1.05, 4.05), pose(10.95, 4.05));
+    during = plan(mapPose(1.05, 4.05), mapPose(10.95, 4.05));
     planned = true;
   });
   ros::Duration(0.05).sleep();
@@ -163,7 +157,7 @@ TEST_F(MapChange, AMapArrivingDuringAPlanIsUsedByTheNextPlan) {
       << "the route is valid on neither map: " << on_before << " / " << on_after;
 
   ros::Duration(0.5).sleep();
-  const auto next = plan(pose(1.05, 4.05), pose(10.95, 4.05));
+  const auto next = plan(mapPose(1.05, 4.05), mapPose(10.95, 4.05));
   ASSERT_GE(next.plan.poses.size(), 2u);
   EXPECT_EQ(defect(after, next.plan, 1.05, 4.05, 10.95, 4.05), "");
 }

@@ -8,20 +8,14 @@
 #include <string>
 
 #include "eaci/io/map_io.hpp"
+#include "map_pose.hpp"
 #include "node_log.hpp"
 
 namespace {
 
-const char* kService = "/eaci_planner_node/make_plan";
+using eaci_test::mapPose;
 
-geometry_msgs::PoseStamped pose(double x, double y, const std::string& frame = "map") {
-  geometry_msgs::PoseStamped p;
-  p.header.frame_id = frame;
-  p.pose.position.x = x;
-  p.pose.position.y = y;
-  p.pose.orientation.w = 1.0;
-  return p;
-}
+const char* kService = "/eaci_planner_node/make_plan";
 
 nav_msgs::GetPlan::Response plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                  double tolerance = 0.0) {
@@ -44,7 +38,7 @@ class PlannerNode : public ::testing::Test {
     // its warning arrives.
     bool connected = false;
     for (int k = 0; k < 50 && !connected; ++k) {
-      plan(pose(0.4, 0.4), pose(10.0, 10.0));
+      plan(mapPose(0.4, 0.4), mapPose(10.0, 10.0));
       connected = !log_.waitFor({"is off the costmap"}, 0.2).empty();
     }
     ASSERT_TRUE(connected) << "no warning of eaci_planner_node on /rosout";
@@ -73,7 +67,7 @@ class PlannerNode : public ::testing::Test {
 }  // namespace
 
 TEST_F(PlannerNode, PlansACollisionFreeRouteAcrossTheLab) {
-  const auto response = plan(pose(0.4, 0.4), pose(4.4, 2.6));
+  const auto response = plan(mapPose(0.4, 0.4), mapPose(4.4, 2.6));
   const auto& poses = response.plan.poses;
   ASSERT_GE(poses.size(), 2u);
   EXPECT_EQ(response.plan.header.frame_id, "map");
@@ -102,29 +96,29 @@ TEST_F(PlannerNode, PlansACollisionFreeRouteAcrossTheLab) {
 TEST_F(PlannerNode, BadRequestsGetAnEmptyPlanNamingTheirFaultAndTheNodeStaysUp) {
   // Goal in the border wall (the map's bottom-left cell), no tolerance.
   EXPECT_FALSE(freeAt(0.025, 0.025));
-  expectRefusedWith(pose(0.4, 0.4), pose(0.025, 0.025),
+  expectRefusedWith(mapPose(0.4, 0.4), mapPose(0.025, 0.025),
                     {"goal (0.025, 0.025) is in an obstacle and no free cell lies within 0 m of it"});
   // Start in the wall.
   EXPECT_FALSE(freeAt(0.025, 1.0));
-  expectRefusedWith(pose(0.025, 1.0), pose(4.4, 2.6), {"start (0.025, 1.000): the start is in a lethal obstacle"});
+  expectRefusedWith(mapPose(0.025, 1.0), mapPose(4.4, 2.6), {"start (0.025, 1.000): the start is in a lethal obstacle"});
   // Off the map (4.8 x 3.0 m from the origin).
-  expectRefusedWith(pose(0.4, 0.4), pose(10.0, 10.0), {"goal (10.000, 10.000) is off the costmap"});
-  expectRefusedWith(pose(-1.0, 0.4), pose(4.4, 2.6), {"start (-1.000, 0.400) is off the costmap"});
+  expectRefusedWith(mapPose(0.4, 0.4), mapPose(10.0, 10.0), {"goal (10.000, 10.000) is off the costmap"});
+  expectRefusedWith(mapPose(-1.0, 0.4), mapPose(4.4, 2.6), {"start (-1.000, 0.400) is off the costmap"});
   // A frame nobody publishes.
-  expectRefusedWith(pose(0.4, 0.4, "nowhere"), pose(4.4, 2.6),
+  expectRefusedWith(mapPose(0.4, 0.4, "nowhere"), mapPose(4.4, 2.6),
                     {"the start is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
-  expectRefusedWith(pose(0.4, 0.4), pose(4.4, 2.6, "nowhere"),
+  expectRefusedWith(mapPose(0.4, 0.4), mapPose(4.4, 2.6, "nowhere"),
                     {"the goal is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
   // NaN: no cell holds it.
-  expectRefusedWith(pose(std::nan(""), 0.4), pose(4.4, 2.6), {"start (", "nan, 0.400) is off the costmap"});
+  expectRefusedWith(mapPose(std::nan(""), 0.4), mapPose(4.4, 2.6), {"start (", "nan, 0.400) is off the costmap"});
   // Still answering.
-  EXPECT_FALSE(plan(pose(0.4, 0.4), pose(4.4, 2.6)).plan.poses.empty());
+  EXPECT_FALSE(plan(mapPose(0.4, 0.4), mapPose(4.4, 2.6)).plan.poses.empty());
 }
 
 TEST_F(PlannerNode, GoalInAnObstacleMovesToTheNearestFreeCellWithinTolerance) {
   // (0.025, 1.5): a border-wall cell one cell from free space.
   EXPECT_FALSE(freeAt(0.025, 1.5));
-  const auto response = plan(pose(0.4, 0.4), pose(0.025, 1.5), 0.2);
+  const auto response = plan(mapPose(0.4, 0.4), mapPose(0.025, 1.5), 0.2);
   ASSERT_FALSE(response.plan.poses.empty());
   const auto& last = response.plan.poses.back().pose.position;
   EXPECT_TRUE(freeAt(last.x, last.y));
