@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -99,45 +100,43 @@ struct ParameterAccess {
   Getter get;
 };
 
+// A table row for a number or switch of Parameters (or of its ColonyParameters base), read and
+// written by the field's own type: int through parseInt, double through parseDouble, bool through
+// parseBool.
+template <class Owner, class T>
+ParameterAccess fieldAccess(const char* name, T Owner::*field) {
+  static_assert(std::is_same_v<T, int> || std::is_same_v<T, double> || std::is_same_v<T, bool>);
+  return {[name, field](Parameters& p, const std::string& v) {
+            if constexpr (std::is_same_v<T, int>) p.*field = parseInt(name, v);
+            else if constexpr (std::is_same_v<T, double>) p.*field = parseDouble(name, v);
+            else p.*field = parseBool(name, v);
+          },
+          [field](const Parameters& p) {
+            if constexpr (std::is_same_v<T, int>) return ParameterValue{std::int64_t{p.*field}};
+            else return ParameterValue{p.*field};
+          }};
+}
+
 // The one table of parameter names: CLI --set, --params files, ROS and the JSON output use it.
 inline const std::map<std::string, ParameterAccess>& parameterTable() {
   static const std::map<std::string, ParameterAccess> table = {
-      {"ants", {[](Parameters& p, const std::string& v) { p.ants = parseInt("ants", v); },
-                [](const Parameters& p) { return ParameterValue{std::int64_t{p.ants}}; }}},
-      {"max_iterations", {[](Parameters& p, const std::string& v) { p.max_iterations = parseInt("max_iterations", v); },
-                          [](const Parameters& p) { return ParameterValue{std::int64_t{p.max_iterations}}; }}},
-      {"alpha", {[](Parameters& p, const std::string& v) { p.alpha = parseDouble("alpha", v); },
-                 [](const Parameters& p) { return ParameterValue{p.alpha}; }}},
-      {"beta", {[](Parameters& p, const std::string& v) { p.beta = parseDouble("beta", v); },
-                [](const Parameters& p) { return ParameterValue{p.beta}; }}},
-      {"q", {[](Parameters& p, const std::string& v) { p.q = parseDouble("q", v); },
-             [](const Parameters& p) { return ParameterValue{p.q}; }}},
-      {"kappa", {[](Parameters& p, const std::string& v) { p.kappa = parseDouble("kappa", v); },
-                 [](const Parameters& p) { return ParameterValue{p.kappa}; }}},
-      {"islands", {[](Parameters& p, const std::string& v) { p.islands = parseInt("islands", v); },
-                   [](const Parameters& p) { return ParameterValue{std::int64_t{p.islands}}; }}},
-      {"lambda", {[](Parameters& p, const std::string& v) { p.lambda = parseDouble("lambda", v); },
-                  [](const Parameters& p) { return ParameterValue{p.lambda}; }}},
-      {"epsilon", {[](Parameters& p, const std::string& v) { p.epsilon = parseDouble("epsilon", v); },
-                   [](const Parameters& p) { return ParameterValue{p.epsilon}; }}},
-      {"aco_rho", {[](Parameters& p, const std::string& v) { p.aco_rho = parseDouble("aco_rho", v); },
-                   [](const Parameters& p) { return ParameterValue{p.aco_rho}; }}},
-      {"aco_tau0", {[](Parameters& p, const std::string& v) { p.aco_tau0 = parseDouble("aco_tau0", v); },
-                    [](const Parameters& p) { return ParameterValue{p.aco_tau0}; }}},
-      {"allow_corner_cutting",
-       {[](Parameters& p, const std::string& v) { p.allow_corner_cutting = parseBool("allow_corner_cutting", v); },
-        [](const Parameters& p) { return ParameterValue{p.allow_corner_cutting}; }}},
-      {"neutral_cost", {[](Parameters& p, const std::string& v) { p.neutral_cost = parseDouble("neutral_cost", v); },
-                        [](const Parameters& p) { return ParameterValue{p.neutral_cost}; }}},
-      {"cost_factor", {[](Parameters& p, const std::string& v) { p.cost_factor = parseDouble("cost_factor", v); },
-                       [](const Parameters& p) { return ParameterValue{p.cost_factor}; }}},
-      {"lethal_cost", {[](Parameters& p, const std::string& v) { p.lethal_cost = parseInt("lethal_cost", v); },
-                       [](const Parameters& p) { return ParameterValue{std::int64_t{p.lethal_cost}}; }}},
-      {"smooth_path", {[](Parameters& p, const std::string& v) { p.smooth_path = parseBool("smooth_path", v); },
-                       [](const Parameters& p) { return ParameterValue{p.smooth_path}; }}},
-      {"allow_unknown",
-       {[](Parameters& p, const std::string& v) { p.allow_unknown = parseBool("allow_unknown", v); },
-        [](const Parameters& p) { return ParameterValue{p.allow_unknown}; }}},
+      {"ants", fieldAccess("ants", &Parameters::ants)},
+      {"max_iterations", fieldAccess("max_iterations", &Parameters::max_iterations)},
+      {"alpha", fieldAccess("alpha", &Parameters::alpha)},
+      {"beta", fieldAccess("beta", &Parameters::beta)},
+      {"q", fieldAccess("q", &Parameters::q)},
+      {"kappa", fieldAccess("kappa", &Parameters::kappa)},
+      {"islands", fieldAccess("islands", &Parameters::islands)},
+      {"lambda", fieldAccess("lambda", &Parameters::lambda)},
+      {"epsilon", fieldAccess("epsilon", &Parameters::epsilon)},
+      {"aco_rho", fieldAccess("aco_rho", &Parameters::aco_rho)},
+      {"aco_tau0", fieldAccess("aco_tau0", &Parameters::aco_tau0)},
+      {"allow_corner_cutting", fieldAccess("allow_corner_cutting", &Parameters::allow_corner_cutting)},
+      {"neutral_cost", fieldAccess("neutral_cost", &Parameters::neutral_cost)},
+      {"cost_factor", fieldAccess("cost_factor", &Parameters::cost_factor)},
+      {"lethal_cost", fieldAccess("lethal_cost", &Parameters::lethal_cost)},
+      {"smooth_path", fieldAccess("smooth_path", &Parameters::smooth_path)},
+      {"allow_unknown", fieldAccess("allow_unknown", &Parameters::allow_unknown)},
       {"island_strategy",
        {[](Parameters& p, const std::string& v) {
           if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;
@@ -145,16 +144,10 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
           else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
         },
         [](const Parameters& p) { return ParameterValue{std::string(toString(p.island_strategy))}; }}},
-      {"island_spacing_max",
-       {[](Parameters& p, const std::string& v) { p.island_spacing_max = parseDouble("island_spacing_max", v); },
-        [](const Parameters& p) { return ParameterValue{p.island_spacing_max}; }}},
-      {"region_margin", {[](Parameters& p, const std::string& v) { p.region_margin = parseInt("region_margin", v); },
-                         [](const Parameters& p) { return ParameterValue{std::int64_t{p.region_margin}}; }}},
-      {"early_stop_iterations",
-       {[](Parameters& p, const std::string& v) { p.early_stop_iterations = parseInt("early_stop_iterations", v); },
-        [](const Parameters& p) { return ParameterValue{std::int64_t{p.early_stop_iterations}}; }}},
-      {"stop_gap", {[](Parameters& p, const std::string& v) { p.stop_gap = parseDouble("stop_gap", v); },
-                    [](const Parameters& p) { return ParameterValue{p.stop_gap}; }}},
+      {"island_spacing_max", fieldAccess("island_spacing_max", &Parameters::island_spacing_max)},
+      {"region_margin", fieldAccess("region_margin", &Parameters::region_margin)},
+      {"early_stop_iterations", fieldAccess("early_stop_iterations", &Parameters::early_stop_iterations)},
+      {"stop_gap", fieldAccess("stop_gap", &Parameters::stop_gap)},
       {"seed",
        {[](Parameters& p, const std::string& v) {
           char* end = nullptr;
@@ -166,8 +159,7 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
           p.seed = static_cast<std::uint64_t>(s);
         },
         [](const Parameters& p) { return ParameterValue{p.seed}; }}},
-      {"threads", {[](Parameters& p, const std::string& v) { p.threads = parseInt("threads", v); },
-                   [](const Parameters& p) { return ParameterValue{std::int64_t{p.threads}}; }}},
+      {"threads", fieldAccess("threads", &Parameters::threads)},
   };
   return table;
 }
