@@ -12,7 +12,7 @@
 #include "eaci/grid/nearest_free.hpp"
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
-#include "route_check.hpp"
+#include "route_defect.hpp"
 #include "start_cell.hpp"
 
 namespace eaci_ros {

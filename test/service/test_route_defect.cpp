@@ -1,4 +1,4 @@
-// The last check of the route that goes out (src/service/route_check.hpp): every cell a
+// The last check of the route that goes out (src/service/route_defect.hpp): every cell a
 // smoothed segment passes, against cells worked out by hand below.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "costmap_snapshot.hpp"
-#include "route_check.hpp"
+#include "route_defect.hpp"
 
 namespace {
 

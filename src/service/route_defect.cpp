@@ -1,4 +1,4 @@
-#include "route_check.hpp"
+#include "route_defect.hpp"
 
 #include <cstdlib>
 
