@@ -333,13 +333,15 @@ TEST_F(CliTest, CostModelParametersAndUnknownCellsAreParameters) {
   EXPECT_EQ(j["parameters"]["lethal_cost"], 200);
   EXPECT_EQ(j["parameters"]["allow_unknown"], false);
   EXPECT_EQ(j["unknown"], "obstacle");
-  j = runJson(common + " --unknown free", &r);  // --unknown is allow_unknown
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(j["parameters"]["allow_unknown"], true);
-  EXPECT_EQ(j["unknown"], "free");
+  for (const char* word : {"expensive", "free"}) {  // --unknown is allow_unknown; free is the old word
+    j = runJson(common + " --unknown " + word, &r);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(j["parameters"]["allow_unknown"], true) << word;
+    EXPECT_EQ(j["unknown"], "expensive") << word;
+  }
   j = runJson(common + " --set allow_unknown=true", &r);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(j["unknown"], "free");
+  EXPECT_EQ(j["unknown"], "expensive");
   runJson(common + " --set cost_factor=-1", &r);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("cost_factor must be a number in [0, 1e6]"), std::string::npos) << r.err;
@@ -529,6 +531,48 @@ TEST_F(CliTest, ClearanceInMetresOnAYamlMap) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_DOUBLE_EQ(j["min_clearance_m"].get<double>(), 2.5);
   EXPECT_DOUBLE_EQ(j["mean_cell_cost"].get<double>(), 0.0);
+}
+
+TEST_F(CliTest, UnknownCellsArePassableAtTheDearestCost) {
+  // A 5 x 1 corridor whose middle pixel is grey (occupancy 0.5: unknown in trinary mode).
+  // --unknown obstacle: no route; --unknown expensive (or free): straight through, four moves,
+  // one into the unknown cell at 1 x (50 + 3 x 252) / 50 = 16.12, three at 1.
+  std::string pgm = "P5\n5 1\n255\n";
+  std::string cells(5, static_cast<char>(254));
+  cells[2] = static_cast<char>(128);
+  pgm += cells;
+  writeFile(tmp("corridor.pgm"), pgm);
+  writeFile(tmp("corridor.yaml"),
+            "image: corridor.pgm\nresolution: 1.0\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const std::string m = "--map " + quote(tmp("corridor.yaml").string()) + " --start 0,0 --goal 0,4 --algorithm astar";
+  CliRun r;
+  runJson(m + " --unknown obstacle", &r);
+  EXPECT_EQ(r.exit_code, 3) << r.err;  // no route
+  for (const char* word : {"expensive", "free"}) {
+    const json j = runJson(m + " --unknown " + word, &r);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NEAR(j["cost"].get<double>(), 3.0 + 806.0 / 50.0, 1e-9) << word;
+    EXPECT_NEAR(j["length"].get<double>(), 4.0, 1e-9) << word;
+  }
+}
+
+TEST_F(CliTest, ToleranceEndsOnTheNearestCellTheStartCanReach) {
+  // Columns 4 and 5 wall the right part off. Goal (2, 5) in the wall: (2, 6) right behind it
+  // is free and 1 away but unreachable; (2, 3), 2 away, is the nearest cell the start reaches.
+  const std::string row = "0 0 0 0 1 1 0 0 0 0\n";
+  writeFile(tmp("walled.txt"), row + row + row + row + row);
+  const std::string m = "--map " + quote(tmp("walled.txt").string()) + " --start 2,0 --algorithm astar";
+  CliRun r;
+  const json j = runJson(m + " --goal 2,5 --tolerance 2", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(j["goal"], json::array({2, 3}));
+  EXPECT_EQ(j["requested_goal"], json::array({2, 5}));
+  EXPECT_NEAR(j["length"].get<double>(), 3.0, 1e-9);
+  // A free goal behind the wall: (2, 3) is 5 away from (2, 8).
+  const json behind = runJson(m + " --goal 2,8 --tolerance 5", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(behind["goal"], json::array({2, 3}));
 }
 
 TEST_F(CliTest, StartXyOnYamlMap) {

@@ -111,12 +111,17 @@ TEST(CostModel, InterpreterReadsCostmapBytes) {
   EXPECT_EQ(costmap.cost(252), 252);
   const eaci::CellInterpretation open_unknown = eaci::CellInterpretation::costmap(253, true);
   EXPECT_FALSE(open_unknown.isObstacle(255));
-  EXPECT_EQ(open_unknown.cost(255), 0);
+  EXPECT_EQ(open_unknown.cost(255), 252);  // passable at the dearest cost, lethal 253 - 1
+  EXPECT_EQ(eaci::CellInterpretation::costmap(200, true).cost(255), 199);
   // Occupancy values (map files, OccupancyGrid) are not graded: a free cell costs 0.
   eaci::CellInterpretation occupancy{65, 255, eaci::UnknownPolicy::kObstacle};
   EXPECT_FALSE(occupancy.isObstacle(40));
   EXPECT_EQ(occupancy.cost(40), 0);
   EXPECT_TRUE(occupancy.isObstacle(65));
+  // Unknown allowed on an ungraded map: costmap_2d's dearest passable cost, 252, for the CostRule.
+  occupancy.unknown = eaci::UnknownPolicy::kExpensive;
+  EXPECT_FALSE(occupancy.isObstacle(255));
+  EXPECT_EQ(occupancy.cost(255), 252);
 }
 
 TEST(CostModel, MoveCostIsStepTimesWeightedCell) {
@@ -167,7 +172,8 @@ TEST(CostModel, UnknownCellsFollowAllowUnknown) {
   EXPECT_FALSE(eaci::cheapestPath(CostGrid::fromView(map.view(false), false), Cell{0, 0}, Cell{0, 2}).found);
   const auto through = eaci::cheapestPath(CostGrid::fromView(map.view(true), false), Cell{0, 0}, Cell{0, 2});
   ASSERT_TRUE(through.found);
-  EXPECT_DOUBLE_EQ(through.cost, 2.0);
+  // Into the unknown cell at the dearest passable cost, 252: (50 + 3 x 252) / 50; then 1.
+  EXPECT_DOUBLE_EQ(through.cost, 806.0 / 50.0 + 1.0);
 }
 
 TEST(CostModel, AStarCostEqualsAnIndependentWeightedDijkstra) {

@@ -398,9 +398,9 @@ TEST_F(MapIoFiles, RawModeKeepsEveryPixelAsACostmapCost) {
   EXPECT_TRUE(view.isObstacle(Cell{1, 0}));  // 253
   EXPECT_TRUE(view.isObstacle(Cell{1, 1}));  // 254
   EXPECT_TRUE(view.isObstacle(Cell{1, 2}));  // 255, unknown as obstacle
-  const GridView unknown_free = map.view(UnknownPolicy::kFree);
+  const GridView unknown_free = map.view(UnknownPolicy::kExpensive);
   EXPECT_FALSE(unknown_free.isObstacle(Cell{1, 2}));
-  EXPECT_EQ(unknown_free.cost(Cell{1, 2}), 0);
+  EXPECT_EQ(unknown_free.cost(Cell{1, 2}), 252);  // the dearest passable cost: lethal 253 - 1
   // A lethal cost of 200 makes the 252 cell an obstacle too.
   EXPECT_TRUE(map.view(UnknownPolicy::kObstacle, 200).isObstacle(Cell{0, 3}));
   EXPECT_FALSE(map.view(UnknownPolicy::kObstacle, 200).isObstacle(Cell{0, 2}));

@@ -155,7 +155,7 @@ TEST_P(PlannerSuite, ReadsCostmapStyleBuffersBottomRowFirst) {
   // Unknown as obstacle: the only way down, through the top-right corner, is closed.
   EXPECT_EQ(eaci::plan(view, Cell{0, 0}, Cell{2, 0}, algorithm(), parameters()).status, PlanStatus::kNoPath);
   // Unknown as free: right along the top, down the gap, back along the bottom.
-  costmap.unknown = eaci::UnknownPolicy::kFree;
+  costmap.unknown = eaci::UnknownPolicy::kExpensive;
   const eaci::GridView optimistic(buffer.data(), 3, 3, eaci::RowOrder::kBottomFirst, costmap);
   const auto r = eaci::plan(optimistic, Cell{0, 0}, Cell{2, 0}, algorithm(), parameters());
   ASSERT_TRUE(r.success()) << r.error;

@@ -55,7 +55,7 @@ struct PreparedMap {
 
 void prepare(PreparedMap& m, const eaci::OccupancyMap& map, const eaci::InflationParameters& inflation, double resolution) {
   const eaci::Parameters defaults;
-  const eaci::UnknownPolicy unknown = defaults.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+  const eaci::UnknownPolicy unknown = defaults.allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle;
   m.costs = CostBytes{map.width, map.height, eaci::inflatedCosts(map.view(unknown), resolution, inflation)};
   m.view = eaci::GridView(m.costs.bytes.data(), map.width, map.height, eaci::RowOrder::kTopFirst,
                           eaci::inflatedCostsInterpretation(defaults.allow_unknown));

@@ -52,11 +52,11 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
   return grid;
 }
 
-eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free) {
+eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool allow_unknown) {
   eaci::CellInterpretation interpretation;
   interpretation.lethal_cost = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
   interpretation.unknown_value = 255;  // int8 -1
-  interpretation.unknown = unknown_is_free ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
+  interpretation.unknown = allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle;
   const std::size_t cells = static_cast<std::size_t>(grid.info.width) * grid.info.height;
   if (grid.data.size() != cells || cells == 0) return eaci::GridView();
   return eaci::GridView(reinterpret_cast<const std::uint8_t*>(grid.data.data()), static_cast<int>(grid.info.width),
@@ -78,7 +78,7 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
 
 std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold,
                                           const eaci::InflationParameters& inflation) {
-  const eaci::GridView view = viewOf(grid, occupied_threshold, /*unknown_is_free=*/false);
+  const eaci::GridView view = viewOf(grid, occupied_threshold, /*allow_unknown=*/false);
   if (view.empty() || !(grid.info.resolution > 0)) return {};
   return eaci::inflatedCosts(view, grid.info.resolution, inflation);
 }

@@ -34,8 +34,9 @@ TfMapFrame frameOf(const nav_msgs::OccupancyGrid& grid);
 nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std::string& frame_id);
 
 // The grid's data viewed without a copy: int8 -1 (unknown) reads as the byte 255; cells at
-// or above `occupied_threshold` (0..100) are obstacles.
-eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool unknown_is_free);
+// or above `occupied_threshold` (0..100) are obstacles; unknown cells are obstacles, or with
+// `allow_unknown` passable at the dearest cost (eaci::UnknownPolicy::kExpensive).
+eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool allow_unknown);
 
 // Marks every cell whose centre lies within `radius` metres of an occupied cell's centre as
 // occupied (100), so a robot of that radius, planned as a point, keeps clear of obstacles

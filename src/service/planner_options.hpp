@@ -14,7 +14,7 @@ namespace eaci_ros {
 
 struct RosPlannerOptions {
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | astar
-  double default_tolerance = 0.0;   // m: a goal in an obstacle moves to the nearest free cell within it
+  double default_tolerance = 0.0;   // m: the route ends on the cell nearest the goal within it that the start can reach
   int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
   bool publish_plan = true;
   double max_planning_time = 5.0;   // s; the best route so far is returned when it runs out; 0 = no limit

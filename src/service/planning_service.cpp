@@ -10,7 +10,9 @@
 #include <utility>
 
 #include "eaci/grid/nearest_free.hpp"
+#include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
+#include "route_defect.hpp"
 #include "start_cell.hpp"
 
 namespace eaci_ros {
@@ -29,23 +31,6 @@ std::string sizeOf(const eaci::MapFrame& frame) {
 // Costmaps larger than this are refused: 32-bit cell indices, and the planner's per-cell
 // buffers (a few tens of bytes a cell) must fit a robot's memory.
 constexpr std::size_t kMaxCostmapCells = eaci::kMaxGridCells;
-
-// "" when `route` runs from `from` to `to` by 8-neighbour moves over cells `view` lets a robot
-// cross, never between two blocked cells that touch at a corner; else what is wrong. A last
-// check of what goes out to the robot, independent of the planner that made it.
-std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route, eaci::Cell from, eaci::Cell to) {
-  if (route.empty() || !(route.front() == from) || !(route.back() == to)) return "it does not join start and goal";
-  for (std::size_t i = 0; i < route.size(); ++i) {
-    if (!view.isFree(route[i])) return "cell " + std::to_string(i) + " is an obstacle";
-    if (i == 0) continue;
-    const int dr = route[i].row - route[i - 1].row, dc = route[i].col - route[i - 1].col;
-    if (std::abs(dr) > 1 || std::abs(dc) > 1 || (dr == 0 && dc == 0)) return "it jumps at cell " + std::to_string(i);
-    if (dr != 0 && dc != 0 &&
-        (!view.isFree({route[i - 1].row + dr, route[i - 1].col}) || !view.isFree({route[i - 1].row, route[i - 1].col + dc})))
-      return "it cuts a corner at cell " + std::to_string(i);
-  }
-  return "";
-}
 
 }  // namespace
 
@@ -261,11 +246,17 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
 
   const eaci::GridView view(costmap.cells.data(), frame.width, frame.height, costmap.order, interpretation);
-  const auto reachable_goal = eaci::nearestFreeCell(view, *goal_cell, tolerance / frame.resolution, should_stop);
-  if (!reachable_goal) {
-    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
-      return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) +
-                     " while looking for a free cell near the goal");
+  // The goal tolerance, as navfn's: the route ends on the cell nearest to the goal, within the
+  // tolerance, that the start can reach. First the nearest free cell (the goal itself when it is
+  // free: no extra work in the normal case); only when no route reaches it, a flood from the
+  // start finds the nearest reachable cell (a free cell behind a wall must not win).
+  const double radius_cells = tolerance / frame.resolution;
+  const auto stopped_while = [&](const std::string& what) {
+    return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
+  };
+  std::optional<eaci::Cell> target = eaci::nearestFreeCell(view, *goal_cell, radius_cells, should_stop);
+  if (!target) {
+    if (stop_reason.load() != static_cast<int>(StopReason::kNone)) return stopped_while("looking for a free cell near the goal");
     return failure("goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
                    eaci::formatNumber(tolerance) + " m of it");
   }
@@ -275,7 +266,23 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
-  reply.result = eaci::plan(view, *start_cell, *reachable_goal, options.algorithm, params, plan_options);
+  reply.result = eaci::plan(view, *start_cell, *target, options.algorithm, params, plan_options);
+  if (reply.result.status == eaci::PlanStatus::kNoPath && !reply.result.interrupted && radius_cells >= 1) {
+    const eaci::CostGrid grid = eaci::CostGrid::fromView(view, params.allow_corner_cutting);
+    const auto reachable = eaci::nearestReachableCell(grid, *start_cell, *goal_cell, radius_cells, should_stop);
+    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
+      return stopped_while("looking for a cell near the goal that the start can reach");
+    if (!reachable)
+      return failure("goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
+                     eaci::formatNumber(tolerance) + " m of it");
+    if (!(*reachable == *target)) {  // else the plan failed for another reason: its error stands
+      say(LogLevel::kInfo, "no route reaches " + where(frame.cellToWorld(*target)) + ": planning to " +
+                               where(frame.cellToWorld(*reachable)) +
+                               ", the cell nearest the goal within the tolerance that the start can reach");
+      target = reachable;
+      reply.result = eaci::plan(view, *start_cell, *target, options.algorithm, params, plan_options);
+    }
+  }
   reportLandmarks(frame);
   if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
   if (!reply.result.success()) {
@@ -285,12 +292,20 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     return failure(std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
                    " iterations, before a route was found");
   }
-  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *reachable_goal);
-  if (!defect.empty() || reply.result.smoothed_path.empty() || !(reply.result.smoothed_path.front() == *start_cell) ||
-      !(reply.result.smoothed_path.back() == *reachable_goal))
-    return failure("internal error: the planner's route is not drivable (" + (defect.empty() ? "smoothed ends" : defect) +
-                   "); no plan");
-  if (!(*reachable_goal == *goal_cell)) reply.goal = frame.cellToWorld(*reachable_goal);
+  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target);
+  if (!defect.empty())
+    return failure("internal error: the planner's route is not drivable (" + defect + "); no plan");
+  // The route that goes out is result.smoothed_path: walked through every cell its segments
+  // pass; if the smoother got one wrong, the grid route (just checked) goes out instead.
+  if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
+  const std::string smoothed_defect =
+      drivableRouteDefect(view, reply.result.smoothed_path, *start_cell, *target, params.allow_corner_cutting);
+  if (!smoothed_defect.empty()) {
+    say(LogLevel::kWarn, "the smoothed route is not drivable (" + smoothed_defect + "): sending the grid route instead");
+    reply.result.smoothed_path = reply.result.path;
+    reply.result.smoothed_length = reply.result.length;
+  }
+  if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
                              std::to_string(reply.result.iterations_run) + " iterations: returning " +

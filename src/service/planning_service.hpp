@@ -48,22 +48,29 @@ struct ServiceSettings {
   bool save_costmap_on_failure = false;  // save the costmap of every failed plan, off the planning thread
   int save_costmap_keep = 10;            // newest replays kept per kind (0 = all)
   std::function<bool()> shutting_down;   // e.g. !ros::ok(); asked like the time limit
+  // Tests only: changes result.smoothed_path before the last check of the route that goes out
+  // (a seam to inject a smoother's defect); empty in the plugin and the node.
+  std::function<void(eaci::CellPath&)> smoothed_path_hook;
 };
 
 struct PlanRequest {
   Eigen::Vector2d start = Eigen::Vector2d::Zero();  // m, in the costmap's frame
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();
-  double tolerance = -1.0;  // m: a goal in an obstacle moves to the nearest free cell within it; < 0: default_tolerance
+  // m; < 0: default_tolerance. The route ends on the cell nearest the goal within it that the
+  // start can reach (navfn's rule): the goal itself when free and reachable.
+  double tolerance = -1.0;
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
 };
 
 struct PlanReply {
   bool ok = false;
   std::string error;            // one line when !ok
-  eaci::PlanResult result;      // the core's result; result.smoothed_path is the route a robot drives
+  // The core's result; result.smoothed_path is the route a robot drives (the grid route, `path`,
+  // when a smoothed segment failed the last check).
+  eaci::PlanResult result;
   eaci::MapFrame frame;         // the costmap's frame the cells are in
   std::string frame_id;
-  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the free cell within tolerance
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the reachable cell within tolerance
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
   RosPlannerOptions options;    // the options the plan was made with (orientation_mode, publish_plan, ...)

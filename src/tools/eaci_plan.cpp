@@ -29,6 +29,7 @@
 #include "eaci/grid/cell_numbering.hpp"
 #include "eaci/grid/inflation.hpp"
 #include "eaci/grid/nearest_free.hpp"
+#include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/map_io.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/planner/parameter_file.hpp"
@@ -74,8 +75,8 @@ struct Options {
   std::vector<std::string> sets;
   std::string json_file;
   std::string png_file;
-  std::string unknown;  // free | obstacle: --set allow_unknown=true | false
-  std::string tolerance;           // m: a goal off the free space moves to the nearest free cell within it
+  std::string unknown;  // expensive (or its old name free) | obstacle: --set allow_unknown=true | false
+  std::string tolerance;           // m: the route ends on the cell nearest the goal within it that the start can reach
   std::string inflate;             // m: inflation radius (costmap_2d's inflation)
   std::string inscribed_radius;    // m, with --inflate
   std::string cost_scaling_factor; // 1/m, with --inflate
@@ -107,7 +108,7 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
       throw InputError(std::string("--set ") + assignment + ": " + e.what());
     }
   }
-  if (!o.unknown.empty()) p.allow_unknown = o.unknown == "free";
+  if (!o.unknown.empty()) p.allow_unknown = o.unknown != "obstacle";
   if (!o.seed.empty()) {
     try {
       eaci::setParameter(p, "seed", o.seed);
@@ -165,7 +166,7 @@ std::string baseName(const std::string& path) {
 // The map as the parameters read it: unknown cells per allow_unknown, and in a map of costs
 // (mode: raw) obstacles from lethal_cost up.
 eaci::GridView mapView(const eaci::OccupancyMap& map, const eaci::Parameters& params) {
-  return map.view(params.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle,
+  return map.view(params.allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle,
                   static_cast<std::uint8_t>(params.lethal_cost));
 }
 
@@ -334,10 +335,13 @@ int run(int argc, char** argv) {
   app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
       ->allow_extra_args(false);
   app.add_option("--unknown", o.unknown,
-                 "how unknown map cells count: free or obstacle (= --set allow_unknown=true|false; default obstacle)")
-      ->check(CLI::IsMember({"free", "obstacle"}));
+                 "how unknown map cells count: obstacle, or expensive: passable at the dearest cost (252 on the "
+                 "costmap scale), so routes cross unknown space only where a detour costs more; free is the old "
+                 "word for expensive (= --set allow_unknown=false|true; default obstacle)")
+      ->check(CLI::IsMember({"expensive", "free", "obstacle"}));
   app.add_option("--tolerance", o.tolerance,
-                 "metres: a goal in an obstacle or off the free space moves to the nearest free cell within this");
+                 "metres: the route ends on the cell nearest the goal within this that the start can reach (a goal "
+                 "in an obstacle, or walled off from the start, moves there)");
   app.add_option("--inflate", o.inflate,
                  "inflation radius in metres: obstacles spread costmap_2d's inflation cost, routes keep off walls");
   app.add_option("--inscribed-radius", o.inscribed_radius, "metres, with --inflate: cells this near an obstacle are "
@@ -392,8 +396,8 @@ int run(int argc, char** argv) {
     if (starts != 1) throw InputError("give the start once: --start ROW,COL, --start-cell N or --start-xy X,Y");
     if (goals != 1) throw InputError("give the goal once: --goal ROW,COL, --goal-cell N or --goal-xy X,Y");
     buildParameters(o, params);
-    unknown = params.allow_unknown ? eaci::UnknownPolicy::kFree : eaci::UnknownPolicy::kObstacle;
-    context.unknown_policy = params.allow_unknown ? "free" : "obstacle";
+    unknown = params.allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle;
+    context.unknown_policy = params.allow_unknown ? "expensive" : "obstacle";
     map = eaci::loadMap(o.map_path);
     context.map = &*map;
     context.start = resolveEndpoint(*map, o.start_rc, o.start_cell, o.start_xy, "start");
@@ -417,9 +421,16 @@ int run(int argc, char** argv) {
       if (!free)
         throw InputError("goal " + describeCell(*map, *context.goal) + " is not on free space and no free cell lies within --tolerance " +
                          formatNumber(tolerance) + " m (" + formatNumber(cells, 2) + " cells) of it");
-      if (*free != *context.goal) {
+      // As the planning service does it (navfn's rule): the cell nearest the goal within the
+      // tolerance that the start can reach, so a replay of a move_base plan ends where it did.
+      std::optional<eaci::Cell> target = free;
+      if (cells >= 1 && planning_view.isFree(*context.start)) {
+        const eaci::CostGrid grid = eaci::CostGrid::fromView(planning_view, params.allow_corner_cutting);
+        if (const auto reachable = eaci::nearestReachableCell(grid, *context.start, *context.goal, cells)) target = reachable;
+      }
+      if (*target != *context.goal) {
         context.requested_goal = context.goal;
-        context.goal = free;
+        context.goal = target;
       }
     }
   } catch (const InputError& e) {

@@ -30,7 +30,7 @@ struct Rgb {
 constexpr Rgb kFreeColour{255, 255, 255};
 constexpr Rgb kObstacleColour{0, 0, 0};
 constexpr Rgb kUnknownColour{150, 128, 178};       // unknown, planned as obstacle (violet: off the cost ramp)
-constexpr Rgb kUnknownFreeColour{222, 208, 238};   // unknown, planned as free
+constexpr Rgb kUnknownFreeColour{222, 208, 238};   // unknown, planned as passable at the dearest cost
 constexpr Rgb kAuxiliaryColour{166, 186, 210};     // light blue-grey
 constexpr Rgb kGridRoute{kGridRouteColour[0], kGridRouteColour[1], kGridRouteColour[2]};
 constexpr Rgb kSmoothedRoute{kSmoothedRouteColour[0], kSmoothedRouteColour[1], kSmoothedRouteColour[2]};
@@ -355,8 +355,8 @@ PlanImage renderPlan(const PlanDrawing& d) {
   if (has_cost) items.push_back({Swatch::kCostRamp, kFreeColour, "cell cost 0..254"});
   items.push_back({Swatch::kSquare, kObstacleColour, "obstacle"});
   if (has_unknown)
-    items.push_back({Swatch::kSquare, d.unknown == UnknownPolicy::kFree ? kUnknownFreeColour : kUnknownColour,
-                     d.unknown == UnknownPolicy::kFree ? "unknown (as free)" : "unknown"});
+    items.push_back({Swatch::kSquare, d.unknown == UnknownPolicy::kExpensive ? kUnknownFreeColour : kUnknownColour,
+                     d.unknown == UnknownPolicy::kExpensive ? "unknown (passable, dearest cost)" : "unknown"});
   auto swatch_width = [&](const LegendItem& item) {
     return (item.swatch == Swatch::kGradient || item.swatch == Swatch::kCostRamp ? 36 : item.swatch == Swatch::kLine ? 20 : 12) *
            ts;

@@ -54,7 +54,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["min_clearance_m"] = nullptr;
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
-    const UnknownPolicy unknown = context.unknown_policy == "free" ? UnknownPolicy::kFree : UnknownPolicy::kObstacle;
+    const UnknownPolicy unknown = context.unknown_policy == "expensive" ? UnknownPolicy::kExpensive : UnknownPolicy::kObstacle;
     const auto lethal = static_cast<std::uint8_t>(context.parameters.lethal_cost);  // maps of costs (mode: raw)
     // Clearance from the map's own obstacles; costs as planned (--inflate: the inflated costs).
     const CostGrid on_map = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);

@@ -18,7 +18,7 @@ namespace eaci::tools {
 struct PlanContext {
   std::string map_path;
   const OccupancyMap* map = nullptr;    // null when the map could not be loaded
-  std::string unknown_policy = "obstacle";
+  std::string unknown_policy = "obstacle";  // or "expensive" (allow_unknown: passable at the dearest cost)
   std::optional<Cell> start;
   std::optional<Cell> goal;
   std::optional<Cell> requested_goal;   // the goal asked for, when --tolerance moved it to `goal`

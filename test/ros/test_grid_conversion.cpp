@@ -50,7 +50,8 @@ TEST(GridConversion, ViewReadsOccupancyWithoutCopying) {
   EXPECT_TRUE(view.isObstacle(Cell{1, 2}));   // unknown as obstacle
   EXPECT_TRUE(view.isObstacle(Cell{0, 3}));   // 70 >= 65
   EXPECT_FALSE(view.isObstacle(Cell{2, 0}));
-  EXPECT_FALSE(eaci_ros::viewOf(grid, 65, true).isObstacle(Cell{1, 2}));  // unknown as free
+  EXPECT_FALSE(eaci_ros::viewOf(grid, 65, true).isObstacle(Cell{1, 2}));  // unknown allowed: passable,
+  EXPECT_EQ(eaci_ros::viewOf(grid, 65, true).cost(Cell{1, 2}), 252);     // at costmap_2d's dearest passable cost
   EXPECT_FALSE(eaci_ros::viewOf(grid, 75, false).isObstacle(Cell{0, 3}));
   nav_msgs::OccupancyGrid malformed = grid;
   malformed.data.pop_back();

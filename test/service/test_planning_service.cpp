@@ -203,6 +203,91 @@ TEST(PlanningService, AGoalInAnObstacleMovesToTheNearestFreeCellWithinTolerance)
   EXPECT_FALSE(too_far.ok);
 }
 
+// A wall two cells thick, columns 5 and 6, from top to bottom: nothing right of it can be
+// reached from the start on the left. The goal (3, 6) lies in the wall; (3, 7), right behind
+// it, is the nearest free cell (1 away) but unreachable; (3, 4), 2 away, is the nearest cell the
+// start can reach. navfn's rule ends the route there; the nearest free cell would fail the plan.
+CostmapSnapshot wallAcrossTheMap() {
+  CostmapSnapshot costmap = openCostmap(12, 7);
+  for (int row = 0; row < 7; ++row) at(costmap, row, 5) = at(costmap, row, 6) = kCostmapLethal;
+  return costmap;
+}
+
+TEST(PlanningService, AGoalToleranceEndsOnTheNearestCellTheStartCanReach) {
+  for (const eaci::Algorithm algorithm : {eaci::Algorithm::kAStar, eaci::Algorithm::kEaci}) {
+    Log log;
+    PlanningService service(settings(), log.logger());
+    configure(service, configuration(algorithm));
+    const CostmapSnapshot costmap = wallAcrossTheMap();
+    const PlanReply reply = service.plan(costmap, request(costmap, {3, 0}, {3, 6}, 2.0));
+    ASSERT_TRUE(reply.ok) << eaci::toString(algorithm) << ": " << reply.error;
+    EXPECT_EQ(reply.result.path.back(), (eaci::Cell{3, 4}));
+    EXPECT_EQ(reply.goal, centre(costmap, 3, 4));
+    EXPECT_EQ(routeDefect(costmap, reply.result.path, {3, 0}, {3, 4}), "");
+    EXPECT_NEAR(reply.result.length, 4.0, 1e-9);  // straight along row 3
+    EXPECT_EQ(log.count("the cell nearest the goal within the tolerance that the start can reach"), 1);
+  }
+}
+
+TEST(PlanningService, AFreeGoalTheStartCannotReachMovesWithinTheTolerance) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+  config.options.default_tolerance = 5.0;  // the request's tolerance -1: the default
+  configure(service, config);
+  const CostmapSnapshot costmap = wallAcrossTheMap();
+  // Goal (3, 9), free but behind the wall: (3, 4) is 5 away, the nearest reachable cell.
+  const PlanReply reply = service.plan(costmap, request(costmap, {3, 0}, {3, 9}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(reply.result.path.back(), (eaci::Cell{3, 4}));
+  EXPECT_EQ(reply.goal, centre(costmap, 3, 4));
+  // Within 4.9 m no cell can be reached; with no tolerance the planner's own failure stands.
+  const PlanReply too_far = service.plan(costmap, request(costmap, {3, 0}, {3, 9}, 4.9));
+  EXPECT_FALSE(too_far.ok);
+  EXPECT_NE(too_far.error.find("cannot be reached from the start, nor any cell within 4.9 m of it"), std::string::npos)
+      << too_far.error;
+  const PlanReply none = service.plan(costmap, request(costmap, {3, 0}, {3, 9}, 0.0));
+  EXPECT_FALSE(none.ok);
+  EXPECT_NE(none.error.find("cannot be reached from start"), std::string::npos) << none.error;
+  // A goal in the wall with a tolerance that holds only the unreachable cell behind it.
+  const PlanReply behind_only = service.plan(costmap, request(costmap, {3, 0}, {3, 6}, 1.5));
+  EXPECT_FALSE(behind_only.ok);
+  EXPECT_NE(behind_only.error.find("nor any cell within 1.5 m"), std::string::npos) << behind_only.error;
+}
+
+// The last check walks the smoothed route that goes out: a smoother defect (injected by the
+// test hook: one straight segment from start to goal, through the wall) is caught, named in a
+// warning, and the grid route goes out instead.
+TEST(PlanningService, ASmoothedRouteThroughAWallIsReplacedByTheGridRoute) {
+  Log log;
+  ServiceSettings with_hook = settings();
+  with_hook.smoothed_path_hook = [](eaci::CellPath& smoothed) { smoothed = {smoothed.front(), smoothed.back()}; };
+  PlanningService service(with_hook, log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot costmap = openCostmap(20, 12);
+  for (int row = 0; row < 10; ++row) at(costmap, row, 10) = kCostmapLethal;  // a wall with a gap at the bottom
+  const PlanReply reply = service.plan(costmap, request(costmap, {2, 2}, {2, 17}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(routeDefect(costmap, reply.result.path, {2, 2}, {2, 17}), "");
+  EXPECT_EQ(reply.result.smoothed_path, reply.result.path);
+  EXPECT_DOUBLE_EQ(reply.result.smoothed_length, reply.result.length);
+  EXPECT_EQ(log.count("the smoothed route is not drivable (segment 1 of 1, (row 2, col 2) to (row 2, col 17): it "
+                      "crosses the blocked cell (row 2, col 10))"),
+            1);
+}
+
+TEST(PlanningService, ASoundSmoothedRouteGoesOutAsItIs) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  const CostmapSnapshot costmap = openCostmap(20, 12);
+  // Open map: the smoothed route is the straight segment from start to goal.
+  const PlanReply reply = service.plan(costmap, request(costmap, {2, 2}, {9, 17}));
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_EQ(reply.result.smoothed_path, (eaci::CellPath{{2, 2}, {9, 17}}));
+  EXPECT_EQ(log.count("not drivable"), 0);
+}
+
 TEST(PlanningService, ABadParameterRefusesEveryPlanUntilFixed) {
   Log log;
   PlanningService service(settings(), log.logger());

@@ -12,13 +12,22 @@
 
 namespace eaci {
 
-enum class UnknownPolicy { kObstacle, kFree };
+// costmap_2d's dearest passable cost: INSCRIBED_INFLATED_OBSTACLE (253) - 1. An unknown cell
+// that may be crossed costs this on maps whose values are not costs (map files,
+// OccupancyGrid, 0/1 maps), so that the CostRule prices it as on a costmap.
+constexpr std::uint8_t kDearestPassableCost = 252;
+
+// What an unknown cell is: an obstacle, or passable at the dearest cost a passable cell can
+// have (allow_unknown), as navfn (COST_OBS - 1) and global_planner (lethal_cost - 1) price it:
+// a route crosses unknown space only where every way round through known space costs more.
+// kFree is the former name of kExpensive (it meant cost 0 then); it is kept so older code builds.
+enum class UnknownPolicy { kObstacle, kExpensive, kFree = kExpensive };
 
 // Byte value -> obstacle or cost: the one interpreter of map bytes, whatever their source.
-// A value equal to `unknown_value` is unknown: an obstacle, or a free cell of cost 0 when
-// unknown cells are allowed; any other value at or above `lethal_cost` is an obstacle; every
-// other cell is free, with its value as its cost when the values are graded (costmap_2d: 0 free
-// .. 252 inscribed, the inflation gradient), else with cost 0.
+// A value equal to `unknown_value` is unknown: an obstacle, or (kExpensive, unknown cells
+// allowed) a passable cell of unknownCost(); any other value at or above `lethal_cost` is an
+// obstacle; every other cell is free, with its value as its cost when the values are graded
+// (costmap_2d: 0 free .. 252 inscribed, the inflation gradient), else with cost 0.
 //   plain 0/1 maps:         lethal 1,   unknown never occurs,      not graded
 //   map files, OccupancyGrid: lethal 100 / 65, unknown 255 (= int8 -1), not graded
 //   costmap_2d:             lethal 253, unknown 255 (NO_INFORMATION), graded
@@ -30,15 +39,24 @@ struct CellInterpretation {
 
   // costmap_2d's char map with its own lethal cost (253 = inscribed inflated obstacle).
   static CellInterpretation costmap(std::uint8_t lethal_cost, bool allow_unknown) {
-    return {lethal_cost, 255, allow_unknown ? UnknownPolicy::kFree : UnknownPolicy::kObstacle, true};
+    return {lethal_cost, 255, allow_unknown ? UnknownPolicy::kExpensive : UnknownPolicy::kObstacle, true};
   }
 
   bool isObstacle(std::uint8_t value) const {
     if (value == unknown_value) return unknown == UnknownPolicy::kObstacle;
     return value >= lethal_cost;
   }
+  // The cost of a passable unknown cell: the dearest a passable cell can cost, lethal_cost - 1
+  // on graded maps (costmap_2d: 252), kDearestPassableCost on the others.
+  std::uint8_t unknownCost() const {
+    if (!graded) return kDearestPassableCost;
+    return lethal_cost > 0 ? static_cast<std::uint8_t>(lethal_cost - 1) : 0;
+  }
   // The cost 0..254 of a cell that is not an obstacle.
-  std::uint8_t cost(std::uint8_t value) const { return graded && value != unknown_value ? value : 0; }
+  std::uint8_t cost(std::uint8_t value) const {
+    if (value == unknown_value) return unknownCost();
+    return graded ? value : 0;
+  }
 };
 
 // Which buffer row holds the top row of the map. Images and the paper's

@@ -37,7 +37,7 @@ struct OccupancyMap : MapFrame {
                 std::uint8_t lethal_cost = kDefaultLethalCost) const {
     CellInterpretation interpretation;
     if (values == CellValues::kCostmapCosts) {
-      interpretation = CellInterpretation::costmap(lethal_cost, unknown == UnknownPolicy::kFree);
+      interpretation = CellInterpretation::costmap(lethal_cost, unknown == UnknownPolicy::kExpensive);
     } else {
       interpretation.lethal_cost = kOccupiedValue;
       interpretation.unknown = unknown;

@@ -31,8 +31,9 @@ struct Parameters : ColonyParameters {
   // The cost model of every planner (global_planner's): a move into a cell of cost c costs
   // step_length x (neutral_cost + cost_factor x c) / neutral_cost, and a route's cost, L_k, is
   // the sum. On a costmap, cells at or above lethal_cost are obstacles and the others have
-  // cost c = their value; unknown cells are free (cost 0) only with allow_unknown. Map files
-  // and OccupancyGrids have free cells of cost 0: a route's cost is its length there.
+  // cost c = their value; unknown cells are obstacles, or with allow_unknown passable at the
+  // dearest cost (CellInterpretation::unknownCost: 252 on the costmap scale). Map files and
+  // OccupancyGrids have free cells of cost 0: a route's cost is its length there.
   double neutral_cost = 50.0;
   double cost_factor = 3.0;
   int lethal_cost = 253;      // costmap_2d INSCRIBED_INFLATED_OBSTACLE
