@@ -14,6 +14,6 @@ cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DEACI_WITH_ROS=OFF -DEACI_B
 cmake --build build/demo -j"$(nproc)" --target eaci_plan
 mkdir -p out
 build/demo/bin/eaci_plan --map maps/lab.yaml --start-xy 0.4,0.4 --goal-xy 4.4,2.6 \
-  --algorithm eaci --seed 1 --params config/eaci_planner.yaml --set smooth_path=true \
+  --algorithm eaci --seed 1 --params config/eaci_planner.yaml \
   --inflate 0.55 --inscribed-radius 0.11 --cost-scaling-factor 5 --json out/demo.json --png out/demo.png
 echo "demo: open out/demo.png to see the routes; out/demo.json has the numbers"

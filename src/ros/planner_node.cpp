@@ -3,12 +3,13 @@
 //   ~map_file (string)   map_server YAML to load; empty -> subscribe to `map`
 //   ~frame_id (string)   frame of a map loaded from ~map_file (default "map"); it is
 //                        published latched on `map` for RViz and other nodes
-//   every core parameter and the ROS options of ros_parameters.hpp under ~ (~robot_radius
+//   every core parameter and the ROS options of planner_options.hpp under ~ (~robot_radius
 //   grows the obstacles so that a robot of that radius, planned as a point, keeps clear;
 //   ~inflation_radius > 0 and ~cost_scaling_factor add costmap_2d's inflation costs around them,
 //   so routes keep off walls as move_base's do);
 //   dynamic_reconfigure (cfg/EaciPlanner.cfg) changes them at run time, between two plans. A bad
-//   value is named on every request, which fails, until it is fixed (planner_configuration.hpp).
+//   value at start is named on every request, which fails, until it is fixed; a bad value from
+//   dynamic_reconfigure is rejected and the values in force stay (planner_configuration.hpp).
 // Services: ~make_plan (nav_msgs/GetPlan), ~cancel (std_srvs/Trigger: the plan in progress
 // stops at its next iteration and answers with the best route so far). Topics: ~plan
 // (nav_msgs/Path), ~pheromone (nav_msgs/OccupancyGrid, with ~visualize_pheromone).

@@ -1,5 +1,8 @@
 // The ~cancel service's state, shared by the planner node and the move_base plugin: whether a
-// plan is in progress, and the flag its colony polls between iterations (planOnGrid's `cancel`).
+// plan is in progress, and the flag the planning service's should_stop reads; every loop of the
+// plan that grows with the map (set-up steps, the A* search, the ants' walks) polls should_stop
+// every few thousand units of work (eaci::StopPoll), so a cancel stops it within a fraction of a
+// millisecond, not only between iterations.
 #pragma once
 
 #include <atomic>
@@ -29,7 +32,7 @@ class PlanCancellation {
     return planning_;
   }
 
-  // For planOnGrid: true once the plan in progress has been cancelled.
+  // For the planning service's should_stop: true once the plan in progress has been cancelled.
   const std::atomic<bool>* flag() const { return &cancel_requested_; }
 
  private:

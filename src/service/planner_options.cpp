@@ -1,21 +1,47 @@
 #include "planner_options.hpp"
 
+#include <charconv>
 #include <cmath>
+#include <map>
 #include <sstream>
-#include <type_traits>
-#include <variant>
 
 namespace eaci_ros {
 namespace {
 
-std::string exactText(double value) {
-  std::ostringstream text;
-  text.precision(17);
-  text << value;
-  return text.str();
-}
+using Options = RosPlannerOptions;
 
-std::string boolText(bool value) { return value ? "true" : "false"; }
+// The ROS options by name, rows of the same kind as the core's table (eaci::detail::fieldAccess).
+const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
+  using eaci::ParameterValue;
+  using eaci::detail::fieldAccess;
+  static const std::map<std::string, eaci::detail::FieldAccess<Options>> table = {
+      {"algorithm",
+       {[](Options& o, const std::string& v) {
+          if (!eaci::parseAlgorithm(v, o.algorithm))
+            throw eaci::ParameterError("algorithm must be eaci, aco or astar (got '" + v + "')");
+        },
+        [](const Options& o) { return ParameterValue{std::string(eaci::toString(o.algorithm))}; }}},
+      {"default_tolerance", fieldAccess<Options>("default_tolerance", &Options::default_tolerance)},
+      {"occupied_threshold", fieldAccess<Options>("occupied_threshold", &Options::occupied_threshold)},
+      {"publish_plan", fieldAccess<Options>("publish_plan", &Options::publish_plan)},
+      {"max_planning_time", fieldAccess<Options>("max_planning_time", &Options::max_planning_time)},
+      {"visualize_pheromone", fieldAccess<Options>("visualize_pheromone", &Options::visualize_pheromone)},
+      {"robot_radius", fieldAccess<Options>("robot_radius", &Options::robot_radius)},
+      {"inflation_radius", fieldAccess<Options>("inflation_radius", &Options::inflation_radius)},
+      {"cost_scaling_factor", fieldAccess<Options>("cost_scaling_factor", &Options::cost_scaling_factor)},
+      {"landmarks", fieldAccess<Options>("landmarks", &Options::landmarks)},
+      {"orientation_mode",
+       {[](Options& o, const std::string& v) {
+          try {
+            o.orientation_mode = eaci::orientationModeFromString(v);
+          } catch (const std::invalid_argument& e) {
+            throw eaci::ParameterError("orientation_mode: " + std::string(e.what()));
+          }
+        },
+        [](const Options& o) { return ParameterValue{std::int64_t{static_cast<int>(o.orientation_mode)}}; }}},
+  };
+  return table;
+}
 
 }  // namespace
 
@@ -25,94 +51,55 @@ eaci::Parameters rosDefaultParameters() {
   params.smooth_path = true;    // robots drive the smoothed route
   params.early_stop_iterations = 10;
   params.stop_gap = 0.01;
-  params.threads = 0;
   params.region_margin = 4;
   return params;
 }
 
 std::string robotDefaultsSummary() {
-  const eaci::Parameters paper;
-  const eaci::Parameters robot = rosDefaultParameters();
-  const RosPlannerOptions options;
+  const auto paper = eaci::parameterValues(eaci::Parameters{});
+  const auto robot = eaci::parameterValues(rosDefaultParameters());
   std::string summary;
-  const auto paper_values = eaci::parameterValues(paper);
-  for (const auto& [name, value] : eaci::parameterValues(robot)) {
-    for (const auto& [paper_name, paper_value] : paper_values) {
-      if (paper_name != name || paper_value == value) continue;
-      if (!summary.empty()) summary += ", ";
-      summary += name + " " + rosParameterText(robot, options, name);
-    }
-  }
+  for (std::size_t i = 0; i < robot.size(); ++i)  // the same names in the same order
+    if (robot[i].second != paper[i].second)
+      summary += (summary.empty() ? "" : ", ") + robot[i].first + " " + valueText(robot[i].second);
   return summary;
 }
 
-const std::vector<std::string>& rosOptionNames() {
-  static const std::vector<std::string> names = {"algorithm",          "default_tolerance", "occupied_threshold",
-                                                 "publish_plan",       "max_planning_time", "visualize_pheromone",
-                                                 "robot_radius",       "orientation_mode",  "inflation_radius",
-                                                 "cost_scaling_factor", "landmarks"};
+std::vector<std::string> rosParameterNames() {
+  std::vector<std::string> names = eaci::parameterNames();
+  for (const auto& entry : optionTable()) names.push_back(entry.first);
   return names;
 }
 
 void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
                      const std::string& text) {
-  if (name == "algorithm") {
-    if (!eaci::parseAlgorithm(text, options.algorithm))
-      throw eaci::ParameterError("algorithm must be eaci, aco or astar (got '" + text + "')");
-  } else if (name == "default_tolerance") {
-    options.default_tolerance = eaci::parseDouble(name, text);
-  } else if (name == "occupied_threshold") {
-    options.occupied_threshold = eaci::parseInt(name, text);
-  } else if (name == "publish_plan") {
-    options.publish_plan = eaci::parseBool(name, text);
-  } else if (name == "max_planning_time") {
-    options.max_planning_time = eaci::parseDouble(name, text);
-  } else if (name == "visualize_pheromone") {
-    options.visualize_pheromone = eaci::parseBool(name, text);
-  } else if (name == "robot_radius") {
-    options.robot_radius = eaci::parseDouble(name, text);
-  } else if (name == "inflation_radius") {
-    options.inflation_radius = eaci::parseDouble(name, text);
-  } else if (name == "cost_scaling_factor") {
-    options.cost_scaling_factor = eaci::parseDouble(name, text);
-  } else if (name == "landmarks") {
-    options.landmarks = eaci::parseInt(name, text);
-  } else if (name == "orientation_mode") {
-    try {
-      options.orientation_mode = eaci::orientationModeFromString(text);
-    } catch (const std::invalid_argument& e) {
-      throw eaci::ParameterError("orientation_mode: " + std::string(e.what()));
-    }
-  } else {
-    eaci::setParameter(params, name, text);
-  }
+  const auto option = optionTable().find(name);
+  if (option != optionTable().end()) option->second.set(options, text);
+  else eaci::setParameter(params, name, text);
 }
 
-std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& name) {
-  if (name == "algorithm") return eaci::toString(options.algorithm);
-  if (name == "default_tolerance") return exactText(options.default_tolerance);
-  if (name == "occupied_threshold") return std::to_string(options.occupied_threshold);
-  if (name == "publish_plan") return boolText(options.publish_plan);
-  if (name == "max_planning_time") return exactText(options.max_planning_time);
-  if (name == "visualize_pheromone") return boolText(options.visualize_pheromone);
-  if (name == "robot_radius") return exactText(options.robot_radius);
-  if (name == "inflation_radius") return exactText(options.inflation_radius);
-  if (name == "cost_scaling_factor") return exactText(options.cost_scaling_factor);
-  if (name == "orientation_mode") return std::to_string(static_cast<int>(options.orientation_mode));
-  if (name == "landmarks") return std::to_string(options.landmarks);
-  for (const auto& [parameter, value] : eaci::parameterValues(params)) {
-    if (parameter != name) continue;
-    return std::visit(
-        [](const auto& v) -> std::string {
-          using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, bool>) return boolText(v);
-          else if constexpr (std::is_same_v<T, double>) return exactText(v);
-          else if constexpr (std::is_same_v<T, std::string>) return v;
-          else return std::to_string(v);
-        },
-        value);
-  }
-  throw eaci::ParameterError("unknown parameter '" + name + "'");
+eaci::ParameterValue rosParameterValue(const eaci::Parameters& params, const RosPlannerOptions& options,
+                                       const std::string& name) {
+  const auto option = optionTable().find(name);
+  if (option != optionTable().end()) return option->second.get(options);
+  const auto& table = eaci::detail::parameterTable();
+  const auto parameter = table.find(name);
+  if (parameter == table.end()) throw eaci::ParameterError("unknown parameter '" + name + "'");
+  return parameter->second.get(params);
+}
+
+std::string valueText(const eaci::ParameterValue& value) {
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::string>) return v;
+        else {  // the shortest text that reads back exactly
+          char text[32];
+          return std::string(text, std::to_chars(text, text + sizeof(text), v).ptr);
+        }
+      },
+      value);
 }
 
 std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options) {
@@ -137,18 +124,6 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
   else if (options.landmarks < 0 || options.landmarks > 64)
     e << "landmarks must be in 0..64, 0 = none (got " << options.landmarks << ")";
   return e.str();
-}
-
-std::string parameterNamedIn(const std::string& sentence) {
-  std::string best;
-  auto consider = [&](const std::string& name) {
-    const bool prefix = sentence.compare(0, name.size(), name) == 0 &&
-                        (sentence.size() == name.size() || sentence[name.size()] == ' ' || sentence[name.size()] == ':');
-    if (prefix && name.size() > best.size()) best = name;
-  };
-  for (const std::string& name : eaci::parameterNames()) consider(name);
-  for (const std::string& name : rosOptionNames()) consider(name);
-  return best;
 }
 
 }  // namespace eaci_ros

@@ -17,7 +17,8 @@ struct RosPlannerOptions {
   double default_tolerance = 0.0;   // m: the route ends on the cell nearest the goal within it that the start can reach
   int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
   bool publish_plan = true;
-  double max_planning_time = 5.0;   // s; the best route so far is returned when it runs out; 0 = no limit
+  double max_planning_time = 1.0;   // s; the best route so far is returned when it runs out; 0 = no limit
+                                    // (move_base holds its costmap lock around the plan)
   bool visualize_pheromone = false; // publish the final pheromone as a nav_msgs/OccupancyGrid
   double robot_radius = 0.0;        // m, planner node only: obstacles grow by it (the plugin has the costmap's inflation)
   // Planner node only, costmap_2d's inflation layer on the map it plans on: with inflation_radius > 0,
@@ -36,9 +37,12 @@ struct RosPlannerOptions {
 // Nc_max = 100, alpha, beta, Q, kappa, lambda, epsilon) made robot-ready: allow_unknown true
 // (as navfn and global_planner), smooth_path true (a robot drives the smoothed route), early
 // stopping after 10 iterations without a cheaper route or once within 1 % of the cheapest
-// route (stop_gap 0.01), all cores (threads 0), ants within 4 moves of the cheapest route
-// (region_margin 4). config/eaci_planner.yaml writes the same values out; the paper's own
-// protocol (every iteration, one thread) is config/paper_benchmark.yaml and the core's
+// route (stop_gap 0.01), ants within 4 moves of the cheapest route (region_margin 4); one
+// thread, as the core's default, so a plan leaves the other cores to the controller and SLAM
+// (two threads saved 10-14 % of a plan on 1600 x 1600 cells, docs/ros.md). With
+// RosPlannerOptions{} (max_planning_time 1 s) these are what one line of configuration plans
+// with; config/eaci_planner.yaml is exactly these values (test_planning_service checks it). The
+// paper's own protocol (every iteration) is config/paper_benchmark.yaml and the core's
 // eaci::Parameters{} (the CLI's and the benchmarks' defaults).
 eaci::Parameters rosDefaultParameters();
 
@@ -46,8 +50,8 @@ eaci::Parameters rosDefaultParameters();
 // as "name value" pairs, for the start-up log line.
 std::string robotDefaultsSummary();
 
-// The names of the ROS options above (algorithm, default_tolerance, ...).
-const std::vector<std::string>& rosOptionNames();
+// Every name a ROS planner reads: the core's table (eaci::parameterNames()) and the options above.
+std::vector<std::string> rosParameterNames();
 
 // Sets one core parameter (eaci::setParameter) or ROS option by name from its text form.
 // Throws eaci::ParameterError with a sentence starting with the name for an unknown name or a
@@ -55,15 +59,15 @@ const std::vector<std::string>& rosOptionNames();
 void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
                      const std::string& text);
 
-// The value of a core parameter or ROS option in the text form setRosParameter() reads back
-// (numbers exact, orientation_mode as global_planner's number). Throws eaci::ParameterError for
-// an unknown name.
-std::string rosParameterText(const eaci::Parameters& params, const RosPlannerOptions& options, const std::string& name);
+// The value of a core parameter or ROS option (orientation_mode as global_planner's number).
+// Throws eaci::ParameterError for an unknown name.
+eaci::ParameterValue rosParameterValue(const eaci::Parameters& params, const RosPlannerOptions& options,
+                                       const std::string& name);
+
+// A value in the text form setRosParameter() reads back (numbers exact).
+std::string valueText(const eaci::ParameterValue& value);
 
 // "" when every value is in range, else one sentence starting with the parameter's name.
 std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options);
-
-// The parameter a sentence of setRosParameter() or rosValidationError() is about ("" if none).
-std::string parameterNamedIn(const std::string& sentence);
 
 }  // namespace eaci_ros

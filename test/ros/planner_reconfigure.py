@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""rostest node: eaci_planner_node's parameters change at run time through dynamic_reconfigure,
-and a bad value is named on every request, which fails, until it is fixed.
+"""rostest node: eaci_planner_node's parameters change at run time through dynamic_reconfigure.
+A bad value at start is named on every request, which fails, until a reconfigure fixes it; a bad
+value from dynamic_reconfigure is rejected with an error naming it, plans go on with the values in
+force, and the reconfigure's answer carries them.
 
-The node (planner_reconfigure.test) starts on the lab map with aco_rho: 2.0, out of (0, 1].
+The node (planner_reconfigure.test) starts on the lab map with aco_rho: 0.0, out of (0, 1] (inside
+the cfg's range, so dynamic_reconfigure does not clamp it).
 """
 import math
 import threading
@@ -63,11 +66,12 @@ class PlannerReconfigure(unittest.TestCase):
     def plan(self, goal=GOAL, tolerance=0.0, start_yaw=0.0, goal_yaw=0.0):
         return self.make_plan(pose(START, start_yaw), pose(goal, goal_yaw), tolerance).plan.poses
 
-    def assert_refused_naming(self, text):
-        """The next plan is empty and the node logs an error containing `text`."""
+    def clear_errors(self):
         with self.lock:
             del self.errors[:]
-        self.assertEqual(self.plan(), [], "planned although a parameter is bad")
+
+    def assert_logged(self, text):
+        """The node logs (since clear_errors) an error containing `text`."""
         deadline = time.time() + 5.0
         while time.time() < deadline:
             with self.lock:
@@ -77,28 +81,54 @@ class PlannerReconfigure(unittest.TestCase):
         with self.lock:
             self.fail("no error containing %r; errors: %r" % (text, self.errors))
 
+    def assert_refused_naming(self, text):
+        """The next plan is empty and the node logs an error containing `text`."""
+        self.clear_errors()
+        self.assertEqual(self.plan(), [], "planned although a parameter is bad")
+        self.assert_logged(text)
+
+    def assert_rejected(self, change, text, in_force):
+        """Reconfiguring with `change` is rejected with an error containing `text`; the answer
+        carries the values in force (`in_force`), and plans go on."""
+        self.clear_errors()
+        config = self.client.update_configuration(change)
+        self.assert_logged(text)
+        for name, value in in_force.items():
+            self.assertEqual(config[name], value, name)
+        self.assert_reaches(self.plan())
+
     def assert_reaches(self, poses, goal=GOAL, within=1e-6):
         self.assertGreater(len(poses), 2)
         last = poses[-1].pose.position
         self.assertLessEqual(math.hypot(last.x - goal[0], last.y - goal[1]), within)
 
     def test_1_a_bad_start_value_is_named_until_it_is_fixed(self):
+        start_error = NODE + "/aco_rho must be in (0, 1] (got 0): refusing to plan until it is fixed"
         for _ in range(2):  # every request, not only the first
-            self.assert_refused_naming(NODE + "/aco_rho must be in (0, 1] (got 2)")
-        # Changing another parameter is not a fix.
-        self.client.update_configuration({"cost_factor": 1.0})
-        self.assert_refused_naming(NODE + "/aco_rho must be in (0, 1] (got 2)")
-        self.client.update_configuration({"aco_rho": 0.5})
+            self.assert_refused_naming(start_error)
+        # Changing another parameter is not a fix: rejected, aco_rho still named.
+        self.clear_errors()
+        config = self.client.update_configuration({"cost_factor": 1.0})
+        self.assert_logged("reconfigure rejected: " + NODE + "/aco_rho must be in (0, 1] (got 0)")
+        self.assertEqual(config["cost_factor"], 3.0)  # the value in force, written back
+        self.assert_refused_naming(start_error)
+        config = self.client.update_configuration({"aco_rho": 0.5})
+        self.assertEqual(config["aco_rho"], 0.5)
         self.assert_reaches(self.plan())
 
-    def test_2_a_bad_value_at_run_time_is_named_until_it_is_fixed(self):
+    def test_2_a_bad_value_at_run_time_is_rejected_and_plans_go_on(self):
+        self.assert_rejected({"aco_rho": 0.0},
+                             "reconfigure rejected: " + NODE + "/aco_rho must be in (0, 1] (got 0); "
+                             "the values in force stay (aco_rho stays 0.5)", {"aco_rho": 0.5})
+        self.assert_rejected({"algorithm": "dijkstra", "cost_factor": 2.0},
+                             "reconfigure rejected: " + NODE + "/algorithm must be eaci, aco or astar (got 'dijkstra')",
+                             {"algorithm": "astar", "cost_factor": 3.0})
+        # Outside the cfg's range: clamped by dynamic_reconfigure (as global_planner's), then valid.
         config = self.client.update_configuration({"aco_rho": 1.5})
-        self.assertEqual(config["aco_rho"], 1.5)  # not clamped: kept, named and refused
-        self.assert_refused_naming(NODE + "/aco_rho must be in (0, 1] (got 1.5)")
-        self.client.update_configuration({"algorithm": "dijkstra", "aco_rho": 0.1})
-        self.assert_refused_naming(NODE + "/algorithm must be eaci, aco or astar (got 'dijkstra')")
-        self.client.update_configuration({"algorithm": "astar"})
+        self.assertEqual(config["aco_rho"], 1.0)
         self.assert_reaches(self.plan())
+        config = self.client.update_configuration({"aco_rho": 0.5})
+        self.assertEqual(config["aco_rho"], 0.5)
 
     def test_3_default_tolerance_and_the_requests_own(self):
         self.client.update_configuration({"default_tolerance": 0.0})

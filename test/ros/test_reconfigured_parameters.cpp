@@ -1,14 +1,12 @@
 // The dynamic_reconfigure config (cfg/EaciPlanner.cfg) against the one parameter table: the same
-// names and defaults, values set by name take effect, bad ones are named; and the ROS
-// parameter helpers. No rosmaster needed.
+// names, defaults and ranges; values set by name take effect, bad ones are named, and the values
+// in force are written back. No rosmaster needed.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <set>
 #include <string>
 
-#include "reconfigured_parameters.hpp"
-#include "ros_parameters.hpp"
+#include "planner_configuration.hpp"
 
 namespace {
 
@@ -17,8 +15,18 @@ using eaci_ros::RosPlannerOptions;
 
 std::set<std::string> configNames() {
   std::set<std::string> names;
-  for (const auto& [name, text] : eaci_ros::configValues(PlannerConfig::__getDefault__())) names.insert(name);
+  for (const auto& [name, text] : eaci_ros::configTexts(PlannerConfig::__getDefault__())) names.insert(name);
   return names;
+}
+
+// The error of applying `config` over the robot-ready defaults.
+template <class Change>
+std::string errorWith(Change change) {
+  PlannerConfig config = PlannerConfig::__getDefault__();
+  change(config);
+  eaci::Parameters params = eaci_ros::rosDefaultParameters();
+  RosPlannerOptions options;
+  return eaci_ros::applyConfig(config, nullptr, params, options);
 }
 
 }  // namespace
@@ -33,41 +41,38 @@ TEST(ReconfigureConfig, HoldsEveryTableParameterButCornerCuttingAndTheRunTimeRos
   EXPECT_EQ(configNames(), expected);
 }
 
+// Every default of the cfg is the plugin's (rosDefaultParameters(), RosPlannerOptions{}).
 TEST(ReconfigureConfig, DefaultsAreTheRobotReadyOnes) {
-  const PlannerConfig config = PlannerConfig::__getDefault__();
-  const eaci::Parameters paper = eaci_ros::rosDefaultParameters();  // the paper's colony, robot-ready
-  EXPECT_EQ(config.ants, paper.ants);
-  EXPECT_EQ(config.max_iterations, paper.max_iterations);
-  EXPECT_EQ(config.alpha, paper.alpha);
-  EXPECT_EQ(config.beta, paper.beta);
-  EXPECT_EQ(config.q, paper.q);
-  EXPECT_EQ(config.kappa, paper.kappa);
-  EXPECT_EQ(config.islands, paper.islands);
-  EXPECT_EQ(config.lambda, paper.lambda);
-  EXPECT_EQ(config.epsilon, paper.epsilon);
-  EXPECT_EQ(config.aco_rho, paper.aco_rho);
-  EXPECT_EQ(config.aco_tau0, paper.aco_tau0);
-  EXPECT_EQ(config.island_strategy, eaci::toString(paper.island_strategy));
-  EXPECT_EQ(config.island_spacing_max, paper.island_spacing_max);
-  EXPECT_EQ(config.region_margin, paper.region_margin);
-  EXPECT_EQ(config.early_stop_iterations, paper.early_stop_iterations);
-  EXPECT_EQ(static_cast<std::uint64_t>(config.seed), paper.seed);
-  EXPECT_EQ(config.threads, paper.threads);
-  EXPECT_EQ(config.neutral_cost, paper.neutral_cost);
-  EXPECT_EQ(config.cost_factor, paper.cost_factor);
-  EXPECT_EQ(config.lethal_cost, paper.lethal_cost);
-  // The ROS layer's own defaults, as navfn and global_planner: unknown cells are free; and the
-  // robot drives the smoothed route.
-  EXPECT_TRUE(config.allow_unknown);
-  EXPECT_TRUE(config.smooth_path);
-  const RosPlannerOptions ros;
-  EXPECT_EQ(config.algorithm, eaci::toString(ros.algorithm));
-  EXPECT_EQ(config.default_tolerance, ros.default_tolerance);
-  EXPECT_EQ(config.max_planning_time, ros.max_planning_time);
-  EXPECT_EQ(config.publish_plan, ros.publish_plan);
-  EXPECT_EQ(config.visualize_pheromone, ros.visualize_pheromone);
-  EXPECT_EQ(config.orientation_mode, 1);  // global_planner's Forward
-  EXPECT_EQ(ros.orientation_mode, eaci::OrientationMode::kForward);
+  const eaci::Parameters robot = eaci_ros::rosDefaultParameters();
+  const RosPlannerOptions options;
+  for (const auto& [name, text] : eaci_ros::configTexts(PlannerConfig::__getDefault__()))
+    EXPECT_EQ(text, eaci_ros::valueText(eaci_ros::rosParameterValue(robot, options, name))) << name;
+  EXPECT_EQ(PlannerConfig::__getDefault__().orientation_mode, 1);  // global_planner's Forward
+}
+
+// The cfg's min and max are valid values (dynamic_reconfigure clamps into them), except where
+// the valid range is open at that end (then the bound itself is named as bad).
+TEST(ReconfigureConfig, TheRangesAreTheValidationsRanges) {
+  const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "aco_rho", "aco_tau0", "neutral_cost"};
+  for (const PlannerConfig* bound : {&PlannerConfig::__getMin__(), &PlannerConfig::__getMax__()}) {
+    const bool at_min = bound == &PlannerConfig::__getMin__();
+    for (const auto& [name, text] : eaci_ros::configTexts(*bound)) {
+      if (name == "algorithm" || name == "island_strategy" || text == "inf") continue;  // no bound
+      eaci::Parameters params = eaci_ros::rosDefaultParameters();
+      RosPlannerOptions options;
+      eaci_ros::setRosParameter(params, options, name, text);
+      const std::string error = eaci_ros::rosValidationError(params, options);
+      if (at_min && open_at_min.count(name)) {
+        EXPECT_EQ(error.rfind(name, 0), 0u) << name << " = " << text << ": " << error;
+      } else {
+        EXPECT_EQ(error, "") << name << " = " << text;
+      }
+    }
+  }
+  EXPECT_EQ(PlannerConfig::__getMin__().ants, 1);
+  EXPECT_EQ(PlannerConfig::__getMin__().islands, 2);
+  EXPECT_EQ(PlannerConfig::__getMax__().lethal_cost, 255);
+  EXPECT_EQ(PlannerConfig::__getMax__().orientation_mode, 6);
 }
 
 TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
@@ -88,7 +93,7 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   config.publish_plan = false;
   config.visualize_pheromone = true;
   config.orientation_mode = 5;
-  EXPECT_EQ(eaci_ros::applyConfig(config, params, options), "");
+  EXPECT_EQ(eaci_ros::applyConfig(config, nullptr, params, options), "");
   EXPECT_EQ(params.cost_factor, 1.0);
   EXPECT_EQ(params.neutral_cost, 20.0);
   EXPECT_EQ(params.lethal_cost, 200);
@@ -107,28 +112,43 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   EXPECT_EQ(options.robot_radius, 0.3);
 }
 
-TEST(ReconfigureConfig, ABadValueIsNamed) {
-  auto errorWith = [](auto change) {
-    PlannerConfig config = PlannerConfig::__getDefault__();
-    change(config);
-    eaci::Parameters params = eaci_ros::rosDefaultParameters();
-    RosPlannerOptions options;
-    return eaci_ros::applyConfig(config, params, options);
-  };
+// Only what differs from the config in force is set, and the changes are listed.
+TEST(ReconfigureConfig, OnlyTheChangedValuesAreSet) {
+  PlannerConfig in_force = PlannerConfig::__getDefault__();
+  eaci::Parameters params = eaci_ros::rosDefaultParameters();
+  params.seed = 1ull << 40;  // wider than the config's int: kept while the config's seed stays
+  RosPlannerOptions options;
+  PlannerConfig config = in_force;
+  config.ants = 12;
+  config.stop_gap = 0.05;
+  std::string changes;
+  EXPECT_EQ(eaci_ros::applyConfig(config, &in_force, params, options, &changes), "");
+  EXPECT_EQ(changes, "ants 12, stop_gap 0.05");
+  EXPECT_EQ(params.ants, 12);
+  EXPECT_EQ(params.seed, 1ull << 40);
+}
+
+TEST(ReconfigureConfig, ABadValueIsNamedWithItsValueAndWhy) {
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 0.0; }), "aco_rho must be in (0, 1] (got 0)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 1.5; }), "aco_rho must be in (0, 1] (got 1.5)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.algorithm = "dijkstra"; }),
             "algorithm must be eaci, aco or astar (got 'dijkstra')");
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.lethal_cost = 300; }).rfind("lethal_cost must be in 1..255", 0), 0u);
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.lethal_cost = 300; }),
+            "lethal_cost must be in 1..255, the costmap cost at or above which a cell is an obstacle (got 300)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.orientation_mode = 7; }).rfind("orientation_mode: '7' is not one of", 0),
             0u);
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.island_strategy = "random"; }).rfind("island_strategy: 'random'", 0), 0u);
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.seed = -1; }).rfind("seed: '-1'", 0), 0u);
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.island_strategy = "random"; }),
+            "island_strategy: 'random' is not one of: geodesic, paper");
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.seed = -1; }),
+            "seed: '-1' is not an integer in 0..18446744073709551615");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.default_tolerance = -0.1; }),
             "default_tolerance must be a distance >= 0 (got -0.1)");
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.max_planning_time = -1; }).rfind("max_planning_time must be >= 0", 0), 0u);
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.max_planning_time = -1; }),
+            "max_planning_time must be >= 0 seconds, 0 = no limit (got -1)");
 }
 
-TEST(ReconfigureConfig, StoredValuesReadBack) {
+// A rejected reconfigure writes the values in force back into the config it answers with.
+TEST(ReconfigureConfig, TheValuesInForceAreWrittenBack) {
   eaci::Parameters params = eaci_ros::rosDefaultParameters();
   params.aco_rho = 0.25;
   params.ants = 12;
@@ -139,6 +159,10 @@ TEST(ReconfigureConfig, StoredValuesReadBack) {
   options.orientation_mode = eaci::OrientationMode::kInterpolate;
   options.max_planning_time = 0.75;
   PlannerConfig config = PlannerConfig::__getDefault__();
+  config.aco_rho = 0.0;  // rejected: the values in force go back
+  eaci::Parameters tried = params;
+  RosPlannerOptions tried_options = options;
+  EXPECT_EQ(eaci_ros::applyConfig(config, nullptr, tried, tried_options), "aco_rho must be in (0, 1] (got 0)");
   eaci_ros::storeInConfig(params, options, config);
   EXPECT_EQ(config.aco_rho, 0.25);
   EXPECT_EQ(config.ants, 12);
@@ -147,15 +171,8 @@ TEST(ReconfigureConfig, StoredValuesReadBack) {
   EXPECT_EQ(config.algorithm, "aco");
   EXPECT_EQ(config.orientation_mode, 2);  // global_planner's Interpolate
   EXPECT_EQ(config.max_planning_time, 0.75);
-  EXPECT_EQ(eaci_ros::configValue(config, "ants"), "12");
-  EXPECT_EQ(eaci_ros::configValue(config, "no_such_parameter"), "");
-}
-
-TEST(RosParameters, SentencesNameTheirParameter) {
-  EXPECT_EQ(eaci_ros::parameterNamedIn("islands (N) must be in 2..100000: S and E count (got 1)"), "islands");
-  EXPECT_EQ(eaci_ros::parameterNamedIn("aco_rho: 'x' is not a number"), "aco_rho");
-  EXPECT_EQ(eaci_ros::parameterNamedIn("ants must be in 1..1000000 (got 0)"), "ants");
-  EXPECT_EQ(eaci_ros::parameterNamedIn("max_iterations must be in 1..1000000 (got 0)"), "max_iterations");
-  EXPECT_EQ(eaci_ros::parameterNamedIn("robot_radius must be a distance >= 0 (got -1)"), "robot_radius");
-  EXPECT_EQ(eaci_ros::parameterNamedIn("something else"), "");
+  params.seed = 1ull << 40;  // wider than the config's int: the config's stays
+  config.seed = 3;
+  eaci_ros::storeInConfig(params, options, config);
+  EXPECT_EQ(config.seed, 3);
 }

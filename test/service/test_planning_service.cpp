@@ -9,14 +9,17 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include <unistd.h>
 
+#include "eaci/planner/parameter_file.hpp"
 #include "service_test_support.hpp"
 
 namespace {
@@ -335,11 +338,38 @@ TEST(PlannerOptions, EveryBadValueIsNamed) {
   EXPECT_EQ(rosValidationError(params, options), "");
 }
 
-TEST(PlannerOptions, TheRobotReadyDefaultsAreConfigEaciPlannerYamls) {
+// config/eaci_planner.yaml is exactly what one line of configuration plans with: every core
+// parameter is in it, and read through the parameter-file reader over the core's defaults (the
+// paper's) it gives rosDefaultParameters(), value for value.
+TEST(PlannerOptions, ConfigEaciPlannerYamlIsExactlyTheRobotReadyDefaults) {
+  const std::string path = std::string(EACI_SOURCE_DIR) + "/config/eaci_planner.yaml";
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  std::set<std::string> keys;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#' && line[0] != ' ' && line.find(':') != std::string::npos)
+      keys.insert(line.substr(0, line.find(':')));
+  for (const std::string& name : eaci::parameterNames()) EXPECT_EQ(keys.count(name), 1u) << name << " is missing";
+  eaci::Parameters read;
+  eaci::applyParameterFile(path, read, path);
+  const auto expected = eaci::parameterValues(rosDefaultParameters());
+  const auto got = eaci::parameterValues(read);
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_EQ(valueText(got[i].second), valueText(expected[i].second)) << got[i].first;
+  // The ROS options are not parameters of the file's reader (eaci_plan --params reads it too):
+  // their defaults are docs/ros.md's table and the cfg's (test_reconfigured_parameters).
+  const RosPlannerOptions options;
+  EXPECT_EQ(options.max_planning_time, 1.0);
+  EXPECT_EQ(options.default_tolerance, 0.0);
+  EXPECT_EQ(options.algorithm, eaci::Algorithm::kEaci);
+}
+
+TEST(PlannerOptions, TheRobotReadyDefaults) {
   const eaci::Parameters robot = rosDefaultParameters();
   EXPECT_EQ(robot.early_stop_iterations, 10);
   EXPECT_EQ(robot.stop_gap, 0.01);
-  EXPECT_EQ(robot.threads, 0);
+  EXPECT_EQ(robot.threads, 1);  // a plan leaves the other cores to the controller and SLAM
   EXPECT_EQ(robot.region_margin, 4);
   EXPECT_TRUE(robot.smooth_path);
   EXPECT_TRUE(robot.allow_unknown);
@@ -348,7 +378,8 @@ TEST(PlannerOptions, TheRobotReadyDefaultsAreConfigEaciPlannerYamls) {
   EXPECT_EQ(robot.max_iterations, paper.max_iterations);
   EXPECT_EQ(robot.alpha, paper.alpha);
   EXPECT_EQ(robot.beta, paper.beta);
-  EXPECT_NE(robotDefaultsSummary().find("early_stop_iterations 10"), std::string::npos) << robotDefaultsSummary();
+  EXPECT_EQ(robotDefaultsSummary(),
+            "allow_unknown true, early_stop_iterations 10, region_margin 4, smooth_path true, stop_gap 0.01");
 }
 
 // A colony configured for a million iterations with no limit stops at ~cancel with the best

@@ -83,36 +83,31 @@ inline void validate(const Parameters& p) {
 }
 
 
-namespace detail {
-
-using Setter = std::function<void(Parameters&, const std::string&)>;
-
-}  // namespace detail
-
 // A parameter's value as it is: whole number, real number, boolean or word.
 using ParameterValue = std::variant<std::int64_t, std::uint64_t, double, bool, std::string>;
 
 namespace detail {
 
-using Getter = std::function<ParameterValue(const Parameters&)>;
-
-struct ParameterAccess {
-  Setter set;
-  Getter get;
+// How one named setting of a `Target` (Parameters here; the ROS layer's options too) is set from
+// text and read back.
+template <class Target>
+struct FieldAccess {
+  std::function<void(Target&, const std::string&)> set;
+  std::function<ParameterValue(const Target&)> get;
 };
+using ParameterAccess = FieldAccess<Parameters>;
 
-// A table row for a number or switch of Parameters (or of its ColonyParameters base), read and
-// written by the field's own type: int through parseInt, double through parseDouble, bool through
-// parseBool.
-template <class Owner, class T>
-ParameterAccess fieldAccess(const char* name, T Owner::*field) {
+// A table row for a number or switch of `Target` (or of a base of it), read and written by the
+// field's own type: int through parseInt, double through parseDouble, bool through parseBool.
+template <class Target = Parameters, class Owner, class T>
+FieldAccess<Target> fieldAccess(const char* name, T Owner::*field) {
   static_assert(std::is_same_v<T, int> || std::is_same_v<T, double> || std::is_same_v<T, bool>);
-  return {[name, field](Parameters& p, const std::string& v) {
+  return {[name, field](Target& p, const std::string& v) {
             if constexpr (std::is_same_v<T, int>) p.*field = parseInt(name, v);
             else if constexpr (std::is_same_v<T, double>) p.*field = parseDouble(name, v);
             else p.*field = parseBool(name, v);
           },
-          [field](const Parameters& p) {
+          [field](const Target& p) {
             if constexpr (std::is_same_v<T, int>) return ParameterValue{std::int64_t{p.*field}};
             else return ParameterValue{p.*field};
           }};
