@@ -186,7 +186,7 @@ def main():
     rospy.init_node("slam_growth", anonymous=True, disable_signals=True)
     publisher = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
     nodes = [n for n in args.nodes.split(",") if n]
-    current = {"map": maps[0], "previous": maps[0]}
+    current = {"map": maps[0], "previous": maps[0], "published_at": time.monotonic()}
     publisher.publish(maps[0].message())
     services = {}
     for n in nodes:
@@ -204,6 +204,7 @@ def main():
             current["previous"] = current["map"]
             current["map"] = m
             publisher.publish(m.message())
+            current["published_at"] = time.monotonic()
             print("published map %d: %d x %d cells" % (m.version, m.grid.shape[1], m.grid.shape[0]), flush=True)
         held.set()
         done.wait(args.hold)
@@ -231,7 +232,7 @@ def main():
             for n in order:
                 # Unknown poses are judged on the map published when the call is sent (the costmap
                 # takes a new map in within a second, update_frequency 1 Hz; a period is 3 s).
-                sent = current["map"]
+                sent, published_at = current["map"], current["published_at"]
                 t0 = time.monotonic()
                 try:
                     reply = services[n](start=pose(*start), goal=pose(*goal), tolerance=args.tolerance)
@@ -244,11 +245,12 @@ def main():
                 length, turn = turn_and_length(points) if len(points) > 1 else (0.0, 0.0)
                 calls[n].append({"request": request, "phase": "held" if held.is_set() else "growing",
                                  "chosen_on_map": chosen.version, "map": sent.version,
-                                 "map_cells": list(sent.grid.shape[::-1]),
+                                 "map_cells": list(sent.grid.shape[::-1]), "since_publish": t0 - published_at,
                                  "start": start, "goal": goal, "seconds": seconds, "poses": len(points),
                                  "unknown_poses": sum(v == UNKNOWN for v in values),
                                  # a wall on the map the request was chosen on is in every costmap since
                                  "occupied_poses": sum(chosen.value(x, y) >= 65 for x, y in points),
+                                 "occupied_points": [p for p in points if chosen.value(*p) >= 65][:20],
                                  "length": length, "turn_deg": turn, "error": error})
             request += 1
     finally:

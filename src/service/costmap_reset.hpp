@@ -1,0 +1,58 @@
+// A costmap that costmap_2d has emptied and not filled again yet, and what to plan on instead.
+//
+// costmap_2d empties a costmap when it resizes it (the static layer took a larger map from SLAM:
+// gmapping grows its map every few seconds) or clears it (move_base's ~clear_costmaps): every
+// cell then holds the default value -- FREE_SPACE, or NO_INFORMATION with the costmap's own
+// track_unknown_space -- until the costmap's next update fills it, up to 1 / update_frequency
+// later. A plan in between sees no wall at all, and both navfn and a plain planner route
+// straight through walls (measured through move_base on a growing map: docs/ros.md, "A map that
+// grows"). The planning service keeps the last costmap that was filled and plans on an emptied
+// one as that one showed it, placed into the new frame (a grown map holds the old one).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "costmap_snapshot.hpp"
+
+namespace eaci_ros {
+
+// True when every cell holds the same value (and there is at least one cell): what costmap_2d
+// leaves in a costmap it has emptied. Stops at the first cell that differs.
+bool isUniform(const CostmapSnapshot& costmap);
+
+// `last` placed into `frame`: each cell of `frame` that a cell of `last` lies on takes that
+// cell's value, every other cell `fill`. Null when the resolutions differ or the origins are not
+// a whole number of cells apart (then nothing of `last` lines up with `frame`'s cells).
+std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eaci::MapFrame& frame, std::uint8_t fill);
+
+// Keeps the last filled costmap of a planner and stands it in for an emptied one.
+class EmptiedCostmapStandIn {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // An emptied costmap stands in for at most `max_wait` from the first plan that saw it
+  // emptied: a costmap that stays uniform longer is taken as it is (an empty map is a map).
+  explicit EmptiedCostmapStandIn(Clock::duration max_wait) : max_wait_(max_wait) {}
+
+  // Called with each plan's costmap before anything else reads it. A filled costmap is kept (a
+  // copy) and left as it is: "" is returned. An emptied one, while a filled one is kept and the
+  // wait has not run out, is replaced by the kept one placed into its frame, and the sentence
+  // returned says so. Throws std::bad_alloc when the copy does not fit (the plan fails; the kept
+  // costmap stays).
+  std::string standIn(CostmapSnapshot& costmap, Clock::time_point now);
+
+  // Forgets the kept costmap (e.g. the plans go to another map).
+  void forget() {
+    kept_.reset();
+    emptied_since_.reset();
+  }
+
+ private:
+  const Clock::duration max_wait_;
+  std::optional<CostmapSnapshot> kept_;
+  std::optional<Clock::time_point> emptied_since_;  // the first plan that found the costmap emptied
+};
+
+}  // namespace eaci_ros

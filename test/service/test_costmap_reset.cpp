@@ -1,0 +1,114 @@
+// A costmap that costmap_2d emptied (resized or cleared, not yet filled) is planned on as the last
+// filled one showed it (costmap_reset.hpp). Expectations are written out cell by cell.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <vector>
+
+#include "costmap_reset.hpp"
+
+namespace eaci_ros {
+namespace {
+
+using Clock = EmptiedCostmapStandIn::Clock;
+
+// A bottom-first costmap of `width` x rows.size() cells; rows given top row first, as drawn.
+CostmapSnapshot costmapOf(const std::vector<std::vector<int>>& top_first, double ox = 0.0, double oy = 0.0) {
+  CostmapSnapshot c;
+  c.frame.height = static_cast<int>(top_first.size());
+  c.frame.width = static_cast<int>(top_first.front().size());
+  c.frame.resolution = 0.5;
+  c.frame.origin = {ox, oy};
+  c.frame_id = "map";
+  for (int r = c.frame.height - 1; r >= 0; --r)
+    for (int v : top_first[static_cast<std::size_t>(r)]) c.cells.push_back(static_cast<std::uint8_t>(v));
+  return c;
+}
+
+CostmapSnapshot uniform(int width, int height, std::uint8_t value, double ox = 0.0, double oy = 0.0) {
+  return costmapOf(std::vector<std::vector<int>>(static_cast<std::size_t>(height),
+                                                 std::vector<int>(static_cast<std::size_t>(width), value)),
+                   ox, oy);
+}
+
+TEST(CostmapReset, UniformMeansEveryCellTheSame) {
+  EXPECT_TRUE(isUniform(uniform(3, 2, 255)));
+  EXPECT_TRUE(isUniform(uniform(1, 1, 0)));
+  EXPECT_FALSE(isUniform(costmapOf({{0, 0, 0}, {0, 0, 254}})));  // the last cell differs
+  EXPECT_FALSE(isUniform(CostmapSnapshot{}));                      // no cell: nothing emptied
+}
+
+TEST(CostmapReset, AGrownMapHoldsTheOldOneWhereItLies) {
+  // Old: 2 x 2 cells at (0, 0). New: 4 x 3 cells at (-0.5, -0.5), one cell further left and
+  // down: the old bottom-left cell lands on new column 1, second row from the bottom.
+  const CostmapSnapshot old = costmapOf({{1, 2},
+                                         {3, 4}});
+  eaci::MapFrame frame = old.frame;
+  frame.width = 4;
+  frame.height = 3;
+  frame.origin = {-0.5, -0.5};
+  const auto placed = placedInto(old, frame, 255);
+  ASSERT_TRUE(placed);
+  EXPECT_EQ(placed->cells, costmapOf({{255, 1, 2, 255},
+                                      {255, 3, 4, 255},
+                                      {255, 255, 255, 255}}, -0.5, -0.5).cells);
+}
+
+TEST(CostmapReset, AShrunkOrShiftedMapKeepsTheOverlapOnly) {
+  const CostmapSnapshot old = costmapOf({{1, 2, 3},
+                                         {4, 5, 6}});
+  eaci::MapFrame frame = old.frame;
+  frame.width = 2;
+  frame.height = 2;
+  frame.origin = {1.0, 0.5};  // two cells right, one up: old (top row, col 2) lands on new (bottom row, col 0)
+  const auto placed = placedInto(old, frame, 0);
+  ASSERT_TRUE(placed);
+  EXPECT_EQ(placed->cells, costmapOf({{0, 0},
+                                      {3, 0}}, 1.0, 0.5).cells);
+}
+
+TEST(CostmapReset, NothingLinesUpAcrossResolutionsOrFractionalShifts) {
+  const CostmapSnapshot old = costmapOf({{1, 2}, {3, 4}});
+  eaci::MapFrame frame = old.frame;
+  frame.resolution = 0.25;
+  EXPECT_FALSE(placedInto(old, frame, 0));
+  frame = old.frame;
+  frame.origin = {0.25, 0.0};  // half a cell
+  EXPECT_FALSE(placedInto(old, frame, 0));
+}
+
+TEST(CostmapReset, AnEmptiedCostmapIsPlannedOnAsTheLastFilledOneShowedIt) {
+  EmptiedCostmapStandIn stand_in(std::chrono::seconds(3));
+  const Clock::time_point t0{};
+  CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
+  EXPECT_EQ(stand_in.standIn(filled, t0), "");
+  EXPECT_EQ(filled.cells, costmapOf({{0, 254}, {0, 0}}).cells);  // a filled costmap is left as it is
+
+  // Resized to 3 x 2 (one column more on the right) and emptied to unknown.
+  CostmapSnapshot emptied = uniform(3, 2, 255);
+  const std::string said = stand_in.standIn(emptied, t0 + std::chrono::seconds(1));
+  EXPECT_NE(said.find("holds 255 in every cell"), std::string::npos) << said;
+  EXPECT_EQ(emptied.frame.width, 3);
+  EXPECT_EQ(emptied.cells, costmapOf({{0, 254, 255}, {0, 0, 255}}).cells);
+}
+
+TEST(CostmapReset, AnEmptyMapIsPlannedOnAsItIsWhenNothingWasFilledOrTheWaitRanOut) {
+  EmptiedCostmapStandIn stand_in(std::chrono::seconds(3));
+  const Clock::time_point t0{};
+  CostmapSnapshot first = uniform(2, 2, 0);
+  EXPECT_EQ(stand_in.standIn(first, t0), "");  // nothing filled was ever seen
+  EXPECT_EQ(first.cells, uniform(2, 2, 0).cells);
+
+  CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
+  stand_in.standIn(filled, t0);
+  CostmapSnapshot emptied = uniform(2, 2, 0);
+  EXPECT_NE(stand_in.standIn(emptied, t0 + std::chrono::seconds(1)), "");   // the wait starts here
+  emptied = uniform(2, 2, 0);
+  EXPECT_NE(stand_in.standIn(emptied, t0 + std::chrono::seconds(4)), "");   // 3 s after the first
+  emptied = uniform(2, 2, 0);
+  EXPECT_EQ(stand_in.standIn(emptied, t0 + std::chrono::milliseconds(4001)), "");  // past 3 s: as it is
+  EXPECT_EQ(emptied.cells, uniform(2, 2, 0).cells);
+}
+
+}  // namespace
+}  // namespace eaci_ros
