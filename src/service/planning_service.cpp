@@ -7,7 +7,6 @@
 #include <exception>
 #include <new>
 #include <sstream>
-#include <thread>
 #include <utility>
 
 #include "eaci/grid/nearest_free.hpp"
@@ -74,7 +73,6 @@ PlanningService::~PlanningService() {
   std::unique_lock<std::mutex> lock(turn_mutex_);  // a plan still running ends first
   turn_free_.wait(lock, [this] { return !planning_; });
   workspace_.reset();
-  retired_.clear();
   writer_.reset();
 }
 
@@ -191,7 +189,11 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
   if (workspace_suspect_ || !workspace_) {
     workspace_suspect_ = false;
-    retireWorkspace(std::move(workspace_));  // waits for none of its threads
+    // Its destructor joins the colony's and the search's worker threads, which a loaded machine
+    // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
+    // on a thread of its own, which the plan does not wait for (its landmark job is only
+    // cancelled, LandmarkCache).
+    eaci::destroyOffThisThread(std::move(workspace_));
     workspace_ = std::make_unique<eaci::PlannerWorkspace>();
     landmarks_reported_ = -1;
     landmark_error_reported_.clear();
@@ -300,25 +302,6 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                                              : "the best route so far"));
   reply.ok = true;
   return finish(reply);
-}
-
-void PlanningService::retireWorkspace(std::unique_ptr<eaci::PlannerWorkspace> workspace) {
-  if (!workspace) return;
-  try {
-    retired_.reserve(retired_.size() + 1);  // room first: keeping it below cannot fail
-    // The box is shared with the thread, which empties it (destroying the workspace) and touches
-    // nothing else: the service may be gone, or the process ending, before it is done. Our
-    // reference never destroys the workspace: the thread's copy of the box outlives its reset,
-    // and a thread that did not start leaves it here.
-    auto box = std::make_shared<std::unique_ptr<eaci::PlannerWorkspace>>(std::move(workspace));
-    try {
-      std::thread([box]() { box->reset(); }).detach();
-    } catch (const std::exception&) {  // no thread (std::system_error) or no memory for its state
-      retired_.push_back(std::move(*box));
-    }
-  } catch (const std::exception&) {  // no memory for the box or the room: destroyed here, as before
-    workspace.reset();
-  }
 }
 
 void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested) {

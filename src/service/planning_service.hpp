@@ -106,12 +106,6 @@ class PlanningService {
  private:
   PlanReply planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
                        const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason);
-  // Lets the workspace a plan that threw left go, to be destroyed off the planning path: its
-  // destructor joins the colony's and the search's worker threads, which a loaded machine may
-  // schedule late, and move_base holds its costmap lock across the plan. A detached thread
-  // owns it and destroys it; when no thread can be started it is kept in retired_ until the
-  // service is destroyed.
-  void retireWorkspace(std::unique_ptr<eaci::PlannerWorkspace> workspace);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,
@@ -129,13 +123,12 @@ class PlanningService {
   // One plan at a time (a flag under a mutex and a condition variable, waited for until the
   // plan's deadline; a std::timed_mutex would do, but ThreadSanitizer cannot see its
   // pthread_mutex_clocklock); the workspace is made again after a plan that threw (its buffers
-  // may be half made).
+  // may be half made; the old one is destroyed on a thread of its own, which no plan waits for).
   std::mutex turn_mutex_;
   std::condition_variable turn_free_;
   bool planning_ = false;  // under turn_mutex_; the members below marked "the plan's" belong to the plan holding the turn
   std::unique_ptr<eaci::PlannerWorkspace> workspace_;  // the plan's
   bool workspace_suspect_ = false;  // under turn_mutex_ when set, the plan's when read: a plan threw, make it afresh
-  std::vector<std::unique_ptr<eaci::PlannerWorkspace>> retired_;  // the plan's: see retireWorkspace
   // Rolling-window costmaps (local costmaps) move every update: landmarks would never hold.
   std::optional<eaci::MapFrame> last_frame_;  // the plan's
   int moves_in_a_row_ = 0;                    // the plan's

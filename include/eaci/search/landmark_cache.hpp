@@ -53,14 +53,16 @@ namespace eaci {
 // may end while a job runs: it touches nothing static and nothing of the cache, only what it owns.
 //
 // Maps whose size keeps changing (gmapping grows its map every few seconds): tables for a size
-// that will be gone before they are ready are not started. A size (width, height, move and
-// cost rule) is *settled* once usableFor has seen it on settle_asks asks in a row (default
-// kSettleAsks = 2: the size of the plan before and of this one); the first size a cache sees is
-// settled at once (a static map, the usual case, gets its landmarks from the first plan on; on a
-// growing map that costs one small table at most, cancelled at the first change). A change of
-// size cancels the job in flight (without waiting) and drops the landmarks of the old size
-// (they can never hold again on the new one); nothing is started for the new size until it is
-// settled. Measured in docs/robustness.md ("Landmarks on maps that grow").
+// that will be gone before any plan uses them are not started, adaptively. A table is *wasted*
+// when the map's size (width, height, move and cost rule) changes before any plan was given
+// it (cancelled in flight, or made and dropped unused). After w tables wasted in a row, a new
+// size must be seen on min(1 + w, max_settle_asks) asks in a row (usableFor is asked once a
+// plan) before a table is started for it; a table a plan uses sets w back to 0. So a static
+// map, or one that keeps its size long enough for its tables to be used, gets them from the
+// first plan on a size, as without a policy; a map that changes size on every plan or two
+// wastes one or two tables and then starts none until its size holds still. A change of size
+// cancels the job in flight (a flag: without waiting) and drops the tables of the old size
+// (they never hold on another). Measured in docs/robustness.md ("Landmarks on maps that grow").
 //
 // Nothing here reaches the plan as an exception: a failure while making them (std::bad_alloc,
 // anything) or a thread that cannot start leaves the cache without new landmarks, says why
@@ -72,15 +74,16 @@ class LandmarkCache {
   // gone: it must own (or outlive) what it uses, and should return soon once `cancel` is true.
   using Maker = std::function<std::shared_ptr<const Landmarks>(const CostGrid&, int count, const std::atomic<bool>* cancel)>;
 
-  // Asks in a row on one size before tables for it are started (see the class comment).
-  static constexpr int kSettleAsks = 2;
+  // The most asks in a row on a new size before tables for it are started, after tables
+  // were wasted (see the class comment).
+  static constexpr int kMaxSettleAsks = 4;
 
   // `count` landmarks asked for (cut to landmarksThatFit for each map). `make`, `start`: how
   // they are made and their thread started (empty: Landmarks::compute, std::thread); the
-  // thread is detached. `settle_asks`: asks in a row on a new size before tables for it are
-  // started (1: at once, no policy).
-  explicit LandmarkCache(int count, Maker make = {}, ThreadStarter start = {}, int settle_asks = kSettleAsks)
-      : count_(count), settle_asks_(settle_asks < 1 ? 1 : settle_asks), make_(std::move(make)),
+  // thread is detached. `max_settle_asks`: kMaxSettleAsks of the size policy (1: no policy, a
+  // table for every size at once).
+  explicit LandmarkCache(int count, Maker make = {}, ThreadStarter start = {}, int max_settle_asks = kMaxSettleAsks)
+      : count_(count), max_settle_asks_(max_settle_asks < 1 ? 1 : max_settle_asks), make_(std::move(make)),
         start_(std::move(start)), state_(std::make_shared<State>()), count_in_use_(count) {}
   LandmarkCache(const LandmarkCache&) = delete;
   LandmarkCache& operator=(const LandmarkCache&) = delete;
@@ -108,32 +111,39 @@ class LandmarkCache {
   }
 
   // Landmarks whose bounds hold on `grid`, or null (then making them is under way, or the map's
-  // size is not settled yet, or none fit on this map, or they could not be made: see
+  // size is not settled yet (the size policy), or none fit on this map, or they could not be made: see
   // lastError()). Never waits for a landmark thread: it only tries the mutex a job takes for a
   // few pointer moves when it ends, and answers null if that job holds it this instant.
   // One plan at a time (the plan's thread owns the size policy's fields).
   std::shared_ptr<const Landmarks> usableFor(const CostGrid& grid) {
     const int in_use = landmarksThatFit(grid.cellCount(), count_);
     count_in_use_.store(in_use, std::memory_order_relaxed);
-    // The size policy: a new size cancels the job in flight (a flag: no lock, no wait) and is
-    // settled after settle_asks asks in a row (the first size at once).
+    // The size policy: a new size cancels the job in flight (a flag: no lock, no wait); a table
+    // no plan was given by then was wasted.
     const Shape shape = Shape::of(grid);
     if (!seen_ || !(shape == last_shape_)) {
       if (seen_ && job_) job_->cancel.store(true, std::memory_order_relaxed);
-      asks_in_a_row_ = seen_ ? 1 : settle_asks_;
+      if (unused_) ++wasted_in_a_row_;
+      unused_ = false;
+      asks_in_a_row_ = 1;
       seen_ = true;
       last_shape_ = shape;
-    } else if (asks_in_a_row_ < settle_asks_) {
-      ++asks_in_a_row_;
+    } else {
+      asks_in_a_row_ = std::min(asks_in_a_row_ + 1, max_settle_asks_);
     }
+    const int settle_asks = std::min(1 + wasted_in_a_row_, max_settle_asks_);
     std::shared_ptr<const Landmarks> dropped;  // freed after the lock is released
     std::unique_lock<std::mutex> lock(state_->mutex, std::try_to_lock);
     if (!lock.owns_lock()) return nullptr;  // a job is storing its landmarks this instant
     State& s = *state_;
     if (s.ready && !(Shape::of(s.ready->grid()) == shape)) dropped = std::move(s.ready);  // they never hold again
-    if (s.ready && s.ready->holdsFor(grid)) return s.ready;
+    if (s.ready && s.ready->holdsFor(grid)) {
+      unused_ = false;
+      wasted_in_a_row_ = 0;
+      return s.ready;
+    }
     if (s.job && s.job->cancel.load(std::memory_order_relaxed)) s.job.reset();  // let go
-    if (s.job || in_use == 0 || asks_in_a_row_ < settle_asks_) return nullptr;
+    if (s.job || in_use == 0 || asks_in_a_row_ < settle_asks) return nullptr;
     // The floor is made on the job's thread too, from a copy of the grid and the landmarks
     // held: the plan that asked waits for neither.
     try {
@@ -146,6 +156,7 @@ class LandmarkCache {
       if (thread.joinable()) thread.detach();
       s.job = job;
       job_ = std::move(job);
+      unused_ = true;
       started_.fetch_add(1, std::memory_order_relaxed);
       s.last_error.clear();
     } catch (const std::exception& e) {  // no thread (std::system_error), no memory for the copy
@@ -236,7 +247,7 @@ class LandmarkCache {
   }
 
   const int count_;
-  const int settle_asks_;
+  const int max_settle_asks_;
   const Maker make_;
   const ThreadStarter start_;
   const std::shared_ptr<State> state_;
@@ -246,7 +257,9 @@ class LandmarkCache {
   std::shared_ptr<Job> job_;
   bool seen_ = false;
   Shape last_shape_;
-  int asks_in_a_row_ = 0;
+  int asks_in_a_row_ = 0;    // on last_shape_, counted up to max_settle_asks_
+  bool unused_ = false;      // a table was started and no plan has been given one since
+  int wasted_in_a_row_ = 0;  // tables started that no plan was given before the size changed
 };
 
 }  // namespace eaci

@@ -204,15 +204,15 @@ class MeetingSearch {
   // costmap it searches, used by later searches on that costmap (or a costlier one). 0 (the
   // default): none, octile bounds alone. For callers that plan many times on one costmap; a
   // change of count drops the landmarks kept: the cache's job in flight is cancelled and let
-  // go, not waited for (LandmarkCache). `make`, `start`, `settle_asks`: how a new cache makes
-  // them, starts its thread and settles a map size (LandmarkCache's; empty: Landmarks::compute,
-  // std::thread, LandmarkCache::kSettleAsks).
+  // go, not waited for (LandmarkCache). `make`, `start`, `max_settle_asks`: how a new cache
+  // makes them, starts its thread and settles a map size (LandmarkCache's; empty:
+  // Landmarks::compute, std::thread, LandmarkCache::kMaxSettleAsks).
   void useLandmarks(int count, LandmarkCache::Maker make = {}, ThreadStarter start = {},
-                    int settle_asks = LandmarkCache::kSettleAsks) {
+                    int max_settle_asks = LandmarkCache::kMaxSettleAsks) {
     if (count == (landmarks_ ? landmarks_->count() : 0)) return;
     landmarks_.reset();
     if (count > 0)
-      landmarks_ = std::make_unique<LandmarkCache>(count, std::move(make), std::move(start), settle_asks);
+      landmarks_ = std::make_unique<LandmarkCache>(count, std::move(make), std::move(start), max_settle_asks);
   }
   // The landmark cache (null without useLandmarks): how many landmarks fit, why making them
   // failed, the landmarks that hold on a grid (LandmarkCache::usableFor).
