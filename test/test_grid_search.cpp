@@ -18,6 +18,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <random>
 #include <utility>
 #include <vector>
@@ -26,6 +27,8 @@
 #include "eaci/search/landmark_cache.hpp"
 #include "eaci/search/landmarks.hpp"
 #include "eaci/search/meeting_search.hpp"
+#include "blocking_landmark_maker.hpp"
+#include "eaci/planner.hpp"
 #include "test_support.hpp"
 
 using eaci::Cell;
@@ -401,29 +404,34 @@ std::shared_ptr<const eaci::Landmarks> landmarksOnceMade(eaci::LandmarkCache& ca
 }
 
 // Starts a cache's threads (LandmarkCache's ThreadStarter) and counts the ones that finished,
-// so that a test can wait for the landmarks under way, made or failed.
+// so that a test can wait for the landmarks under way, made or failed. The cache detaches its
+// threads: the count lives in a state each thread owns a share of.
 class FinishedThreads {
  public:
   eaci::ThreadStarter starter() {
-    return [this](std::function<void()> body) {
-      return std::thread([this, body = std::move(body)] {
+    return [state = state_](std::function<void()> body) {
+      return std::thread([state, body = std::move(body)]() mutable {
         body();
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++finished_;
-        finished_changed_.notify_all();
+        body = nullptr;  // what the job owns goes before it counts as finished
+        std::lock_guard<std::mutex> lock(state->mutex);
+        ++state->finished;
+        state->changed.notify_all();
       });
     };
   }
   // Waits (two minutes at most) until `count` threads have finished; false if they did not.
   bool waitFor(int count) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    return finished_changed_.wait_for(lock, std::chrono::minutes(2), [&] { return finished_ >= count; });
+    std::unique_lock<std::mutex> lock(state_->mutex);
+    return state_->changed.wait_for(lock, std::chrono::minutes(2), [&] { return state_->finished >= count; });
   }
 
  private:
-  std::mutex mutex_;
-  std::condition_variable finished_changed_;
-  int finished_ = 0;
+  struct State {
+    std::mutex mutex;
+    std::condition_variable changed;
+    int finished = 0;
+  };
+  std::shared_ptr<State> state_ = std::make_shared<State>();
 };
 
 }  // namespace
@@ -433,7 +441,7 @@ class FinishedThreads {
 TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   CostGrid grid(30, 30, false);
   for (int r = 3; r < 27; ++r) grid.setCost(Cell{r, 15}, 200);
-  FinishedThreads threads;  // outlives the cache, which joins its thread
+  FinishedThreads threads;
   eaci::LandmarkCache cache(2, {}, threads.starter());
   EXPECT_EQ(cache.usableFor(grid), nullptr);
   ASSERT_TRUE(threads.waitFor(1));
@@ -455,31 +463,180 @@ TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   EXPECT_TRUE(remade->holdsFor(cheaper));
 }
 
-// A cache destroyed while it makes landmarks on a large map stops them instead of finishing:
-// the maker (Landmarks::compute, wrapped to see its answer) returns none. The destruction runs
-// on a thread of its own with a bound of its own, so that a hang fails here instead of at the
-// suite's 300 s timeout. The bound: the landmark thread runs at nice 19 and must be scheduled
-// to see the cancel flag; with a load of 8 on 2 cores the destruction took 2.5 to 11 s (idle:
-// milliseconds), so 60 s is a hang, not a slow machine.
+// A cache destroyed while it makes landmarks on a large map returns at once (it waits for no
+// thread) and its landmark thread stops instead of finishing: the maker (Landmarks::compute,
+// wrapped to see its answer) returns none. The destruction runs on a thread of its own so that
+// a hang fails here instead of at the suite's timeout; the stop is waited for with a bound that
+// only guards against a hang (the thread runs at nice 19: on a loaded machine it may take
+// seconds to be scheduled and see the flag).
 TEST(Landmarks, CacheDestroyedWhileMakingThemStops) {
   constexpr auto kHangBound = std::chrono::seconds(60);
   const CostGrid grid(2000, 2000, false);
-  auto made = std::make_shared<std::atomic<int>>(0);  // 1: stopped with none, 2: finished
-  auto cache = std::make_unique<eaci::LandmarkCache>(8, [made](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+  struct Seen {
+    std::mutex mutex;
+    std::condition_variable changed;
+    bool called = false;
+    int made = 0;  // 1: stopped with none, 2: finished
+  };
+  auto seen = std::make_shared<Seen>();
+  auto cache = std::make_unique<eaci::LandmarkCache>(8, [seen](const CostGrid& g, int count, const std::atomic<bool>* cancel) {
+    {
+      std::lock_guard<std::mutex> lock(seen->mutex);
+      seen->called = true;
+      seen->changed.notify_all();
+    }
     auto landmarks = eaci::Landmarks::compute(g, count, cancel);
-    made->store(landmarks ? 2 : 1);
+    std::lock_guard<std::mutex> lock(seen->mutex);
+    seen->made = landmarks ? 2 : 1;
+    seen->changed.notify_all();
     return landmarks;
   });
   EXPECT_EQ(cache->usableFor(grid), nullptr);
+  EXPECT_EQ(cache->jobsStarted(), 1);
+  {  // making them has begun (a job cancelled before that never calls the maker)
+    std::unique_lock<std::mutex> lock(seen->mutex);
+    ASSERT_TRUE(seen->changed.wait_for(lock, kHangBound, [&] { return seen->called; }));
+  }
   auto destroyed = std::make_shared<std::promise<void>>();
   std::future<void> done = destroyed->get_future();
   std::thread([cache = std::move(cache), destroyed]() mutable {
-    cache.reset();  // cancels and joins the landmark thread
+    cache.reset();  // cancels the landmark thread and lets it go
     destroyed->set_value();
   }).detach();  // left behind if it hangs: the process ends after the failure
-  ASSERT_EQ(done.wait_for(kHangBound), std::future_status::ready)
-      << "destroying the cache did not stop its landmark thread within 60 s";
-  EXPECT_EQ(made->load(), 1) << "the landmarks were finished instead of stopped";
+  ASSERT_EQ(done.wait_for(kHangBound), std::future_status::ready) << "destroying the cache did not return within 60 s";
+  std::unique_lock<std::mutex> lock(seen->mutex);
+  ASSERT_TRUE(seen->changed.wait_for(lock, kHangBound, [&] { return seen->made != 0; }))
+      << "the landmark thread did not stop within 60 s";
+  EXPECT_EQ(seen->made, 1) << "the landmarks were finished instead of stopped";
+}
+
+// Issue #27: no plan waits for the landmark thread. Each test holds the maker blocked
+// (eaci_test::LandmarkGate) while the plan-side step runs, then releases it and waits for every
+// maker call to return, so that no thread outlives the test.
+
+// (a) A map of another size cancels the job in flight without waiting; the new size, once
+// settled (asked on twice in a row, as the old size's table was wasted), gets a job of its own,
+// whose landmarks are the ones kept.
+TEST(Landmarks, ANewMapSizeReturnsWhileTheMakerIsStillBlocked) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  auto cache = std::make_shared<eaci::LandmarkCache>(2, eaci_test::LandmarkGate::maker(gate));
+  const CostGrid grid(64, 64, false), larger(80, 64, false);
+  EXPECT_EQ(cache->usableFor(grid), nullptr);
+  ASSERT_TRUE(gate->waitEntered(1));
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [cache, larger] {
+    EXPECT_EQ(cache->usableFor(larger), nullptr);  // not settled yet: nothing started
+    EXPECT_EQ(cache->jobsStarted(), 1);
+    EXPECT_EQ(cache->usableFor(larger), nullptr);  // settled: a job for it
+    EXPECT_EQ(cache->jobsStarted(), 2);
+  }));
+  ASSERT_TRUE(gate->waitEntered(2));
+  gate->release();
+  ASSERT_TRUE(gate->waitLeft(2));
+  EXPECT_EQ(gate->cancelled(), 1);  // the job for the old size
+  const auto made = landmarksOnceMade(*cache, larger);
+  ASSERT_NE(made, nullptr);
+  EXPECT_TRUE(made->holdsFor(larger));
+  EXPECT_EQ(cache->jobsFinished(), 1);
+}
+
+// (b) A change of count (a rolling window: useLandmarks(0), then landmarks again) drops the
+// cache whose maker is blocked, and the next search runs (without landmarks) at once.
+TEST(Landmarks, AChangeOfCountReturnsWhileTheMakerIsStillBlocked) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  auto search = std::make_shared<MeetingSearch>();
+  const CostGrid grid(64, 64, false);
+  search->useLandmarks(4, eaci_test::LandmarkGate::maker(gate));
+  EXPECT_FALSE(search->cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}).empty());
+  ASSERT_TRUE(gate->waitEntered(1));
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [search, grid, gate] {
+    search->useLandmarks(0);
+    EXPECT_EQ(search->landmarkCache(), nullptr);
+    EXPECT_FALSE(search->cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}).empty());
+    search->useLandmarks(2, eaci_test::LandmarkGate::maker(gate));
+    EXPECT_FALSE(search->cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}).empty());  // starts a job, which blocks
+    search->useLandmarks(3, eaci_test::LandmarkGate::maker(gate));
+    EXPECT_FALSE(search->cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}).empty());
+  }));
+  // The second cache's job may have been cancelled before it called the maker (then it never
+  // does); the last cache's job is not cancelled and makes its landmarks once released.
+  gate->release();
+  ASSERT_NE(landmarksOnceMade(*search->landmarkCache(), grid), nullptr);
+  EXPECT_EQ(search->landmarkCache()->countInUse(), 3);
+  EXPECT_EQ(search->landmarkCache()->jobsStarted(), 1);
+  EXPECT_GE(gate->cancelled(), 1);  // the first cache's job, blocked when its cache was dropped
+}
+
+// (c) Destroying a cache, a MeetingSearch or a whole PlannerWorkspace (as the service does after
+// a plan that threw) while the maker is blocked waits for none of it.
+TEST(Landmarks, DestroyingTheCacheOrItsOwnersReturnsWhileTheMakerIsStillBlocked) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  const CostGrid grid(64, 64, false);
+  auto cache = std::make_unique<eaci::LandmarkCache>(2, eaci_test::LandmarkGate::maker(gate));
+  EXPECT_EQ(cache->usableFor(grid), nullptr);
+  auto search = std::make_unique<MeetingSearch>();
+  search->useLandmarks(4, eaci_test::LandmarkGate::maker(gate));
+  search->cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}, 2);
+  auto workspace = std::make_unique<eaci::PlannerWorkspace>();
+  workspace->meeting.useLandmarks(4, eaci_test::LandmarkGate::maker(gate));
+  workspace->meeting.cheapestRoute(grid, Cell{1, 1}, Cell{60, 60}, 2);
+  ASSERT_TRUE(gate->waitEntered(3));
+  auto owners = std::make_shared<std::tuple<std::unique_ptr<eaci::LandmarkCache>, std::unique_ptr<MeetingSearch>,
+                                            std::unique_ptr<eaci::PlannerWorkspace>>>(
+      std::move(cache), std::move(search), std::move(workspace));
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [owners] {
+    std::get<0>(*owners).reset();
+    std::get<1>(*owners).reset();
+    std::get<2>(*owners).reset();
+  }));
+  gate->release();
+  ASSERT_TRUE(gate->waitLeft(3));
+  EXPECT_EQ(gate->cancelled(), 3);
+}
+
+// The size policy: after w tables wasted in a row (the size changed before any plan was given
+// them) a new size starts a table only once asked on min(1 + w, kMaxSettleAsks) times in a row;
+// a table a plan was given makes it eager again. With max_settle_asks 1 (no policy) every size
+// starts a job, each cancelling the one before.
+TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
+  FinishedThreads threads;
+  eaci::LandmarkCache cache(2, {}, threads.starter());
+  EXPECT_EQ(eaci::LandmarkCache::kMaxSettleAsks, 4);
+  const auto ask = [&](int size) { return cache.usableFor(CostGrid(size, size, false)); };
+  EXPECT_EQ(ask(40), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 1);  // nothing wasted yet: at once
+  EXPECT_EQ(ask(44), nullptr);        // the first table wasted: two asks from now on
+  EXPECT_EQ(ask(48), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 1);
+  EXPECT_EQ(ask(48), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 2);
+  EXPECT_EQ(ask(52), nullptr);  // the second wasted: three asks
+  EXPECT_EQ(ask(52), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 2);
+  EXPECT_EQ(ask(52), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 3);
+  ASSERT_TRUE(threads.waitFor(3));
+  const CostGrid settled(52, 52, false);
+  const auto made = cache.usableFor(settled);  // given to a plan: eager again
+  ASSERT_NE(made, nullptr);
+  EXPECT_TRUE(made->holdsFor(settled));
+  EXPECT_EQ(ask(56), nullptr);
+  EXPECT_EQ(cache.jobsStarted(), 4);
+  ASSERT_TRUE(threads.waitFor(4));
+
+  FinishedThreads eager_threads;
+  eaci::LandmarkCache eager(2, {}, eager_threads.starter(), 1);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(eager.usableFor(CostGrid(40 + 4 * k, 40, false)), nullptr);
+  EXPECT_EQ(eager.jobsStarted(), 4);
+  ASSERT_TRUE(eager_threads.waitFor(4));
+}
+
+// Every loop that makes landmarks asks its cancel flag: a cancelled flag returns none at once.
+TEST(Landmarks, ComputeWithItsCancelFlagSetMakesNone) {
+  const CostGrid grid(300, 300, false);
+  std::atomic<bool> cancel{true};
+  EXPECT_EQ(eaci::Landmarks::compute(grid, 4, &cancel), nullptr);
+  cancel = false;
+  EXPECT_NE(eaci::Landmarks::compute(grid, 4, &cancel), nullptr);
 }
 
 TEST(Landmarks, ThoseThatFitInTheCap) {

@@ -174,7 +174,11 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
   if (workspace_suspect_ || !workspace_) {
     workspace_suspect_ = false;
-    workspace_.reset();
+    // Its destructor joins the colony's and the search's worker threads, which a loaded machine
+    // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
+    // on a thread of its own, which the plan does not wait for (its landmark job is only
+    // cancelled, LandmarkCache).
+    eaci::destroyOffThisThread(std::move(workspace_));
     workspace_ = std::make_unique<eaci::PlannerWorkspace>();
     landmarks_reported_ = -1;
     landmark_error_reported_.clear();
@@ -328,7 +332,7 @@ void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested
     say(LogLevel::kInfo, "the costmap moves with the robot (a rolling window): no landmarks on it, they would be made "
                          "again for every plan");
   }
-  workspace_->meeting.useLandmarks(rolling_ ? 0 : requested);
+  workspace_->meeting.useLandmarks(rolling_ ? 0 : requested, settings_.landmark_maker);
 }
 
 void PlanningService::reportLandmarks(const eaci::MapFrame& frame) {

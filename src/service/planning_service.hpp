@@ -22,6 +22,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "costmap_replay.hpp"
 #include "costmap_snapshot.hpp"
@@ -51,6 +52,8 @@ struct ServiceSettings {
   // Tests only: changes result.smoothed_path before the last check of the route that goes out
   // (a seam to inject a smoother's defect); empty in the plugin and the node.
   std::function<void(eaci::CellPath&)> smoothed_path_hook;
+  // How landmarks are made (tests: a maker that blocks or fails); empty: Landmarks::compute.
+  eaci::LandmarkCache::Maker landmark_maker;
 };
 
 struct PlanRequest {
@@ -127,7 +130,7 @@ class PlanningService {
   // One plan at a time (a flag under a mutex and a condition variable, waited for until the
   // plan's deadline; a std::timed_mutex would do, but ThreadSanitizer cannot see its
   // pthread_mutex_clocklock); the workspace is made again after a plan that threw (its buffers
-  // may be half made).
+  // may be half made; the old one is destroyed on a thread of its own, which no plan waits for).
   std::mutex turn_mutex_;
   std::condition_variable turn_free_;
   bool planning_ = false;  // under turn_mutex_; the members below marked "the plan's" belong to the plan holding the turn

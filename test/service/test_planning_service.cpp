@@ -13,6 +13,7 @@
 #include <future>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -20,6 +21,7 @@
 #include <unistd.h>
 
 #include "eaci/planner/parameter_file.hpp"
+#include "blocking_landmark_maker.hpp"
 #include "service_test_support.hpp"
 
 namespace {
@@ -541,6 +543,52 @@ TEST(PlanningService, LandmarksThatDoNotFitAreFewerAndSaidOnce) {
   const CostmapSnapshot costmap = openCostmap(4100, 4100);
   for (int k = 0; k < 2; ++k) (void)service.plan(costmap, request(costmap, {1, 1}, {4098, 4098}));
   EXPECT_EQ(log.count("4 landmarks do not fit on 4100 x 4100 cells: making 3"), 1);
+}
+
+// Issue #27 at service level: after a plan that threw (its workspace is suspect and made
+// afresh), the next plan returns while the landmark maker of the old workspace is still blocked:
+// the old workspace is destroyed off the planning path, its landmark job cancelled, not waited
+// for. The throw comes from settings.shutting_down, which every plan's stop check asks.
+TEST(PlanningService, APlanAfterOneThatThrewReturnsWhileTheLandmarkMakerIsStillBlocked) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  auto throw_now = std::make_shared<std::atomic<bool>>(false);
+  ServiceSettings s = settings();
+  s.landmark_maker = eaci_test::LandmarkGate::maker(gate);
+  s.shutting_down = [throw_now] {
+    if (throw_now->load()) throw std::runtime_error("a stop check that throws");
+    return false;
+  };
+  auto log = std::make_shared<Log>();
+  auto service = std::make_shared<PlanningService>(s, log->logger());
+  PlanningService::Configuration config = configuration();
+  config.options.landmarks = 4;
+  configure(*service, config);
+  const CostmapSnapshot costmap = openCostmap(300, 300);
+  const PlanRequest r = request(costmap, {10, 10}, {290, 290});
+  ASSERT_TRUE(service->plan(costmap, r).ok);  // starts making landmarks: the maker blocks
+  ASSERT_TRUE(gate->waitEntered(1));
+  throw_now->store(true);
+  const PlanReply threw = service->plan(costmap, r);
+  EXPECT_FALSE(threw.ok);
+  EXPECT_NE(threw.error.find("a stop check that throws"), std::string::npos) << threw.error;
+  throw_now->store(false);
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [service, costmap, r] {
+    EXPECT_TRUE(service->plan(costmap, r).ok);  // a fresh workspace; the old one is let go
+  }));
+  ASSERT_TRUE(gate->waitEntered(2));  // the fresh workspace's own job
+  // A change of count (as a rolling window or a reconfiguration makes it) drops the cache whose
+  // maker is blocked: the plan waits for none either.
+  config.options.landmarks = 2;
+  configure(*service, config);
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [service, costmap, r] {
+    EXPECT_TRUE(service->plan(costmap, r).ok);
+  }));
+  ASSERT_TRUE(gate->waitEntered(3));
+  gate->release();
+  ASSERT_TRUE(gate->waitLeft(3));
+  // The dropped cache's job was cancelled; the suspect workspace's too once the thread that
+  // destroys it had run (it need not have by the release).
+  EXPECT_GE(gate->cancelled(), 1);
 }
 
 TEST(PlanningService, SavedCostmapsKeepTheNewestOnly) {

@@ -80,12 +80,13 @@ struct ColonyWorkspace {
   PheromoneField pheromone;               // likewise
 
   // Room for `ants` routes and `threads` workers (the threads already started stay when their
-  // number is the same).
+  // number is the same; when it changes, a reconfiguration, the old group is destroyed off the
+  // planning thread: its destructor joins its threads, which the plan does not wait for).
   void prepare(int ants, int threads) {
     routes.resize(static_cast<std::size_t>(ants));
     for (AntRoute& route : routes) route.complete = false;
     if (worker_state.size() != static_cast<std::size_t>(threads)) {
-      workers.reset();
+      destroyOffThisThread(std::move(workers));
       worker_state = std::vector<WorkerState>(static_cast<std::size_t>(threads));
     }
   }

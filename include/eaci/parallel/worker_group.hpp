@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <system_error>
 #include <thread>
@@ -31,6 +32,27 @@ namespace eaci {
 // Starts a thread running `body` (std::thread's constructor: throws std::system_error when it
 // cannot). Replaceable for tests that make thread starts fail.
 using ThreadStarter = std::function<std::thread(std::function<void()> body)>;
+
+// Destroys `owned` on a detached thread of its own, which owns it and touches nothing else:
+// for what a plan lets go whose destructor joins threads (a WorkerGroup, a workspace holding
+// some), which a loaded machine may schedule late, so that the plan does not wait for them.
+// When no thread can be started it is destroyed here, as before.
+template <class T>
+void destroyOffThisThread(std::unique_ptr<T> owned) {
+  if (!owned) return;
+  try {
+    // The box is shared with the thread, which empties it; our reference never destroys `owned`
+    // once the thread started (its copy outlives the reset), and keeps it when it did not.
+    auto box = std::make_shared<std::unique_ptr<T>>(std::move(owned));
+    try {
+      std::thread([box]() { box->reset(); }).detach();
+    } catch (const std::exception&) {  // no thread (std::system_error) or no memory for its state
+      box->reset();
+    }
+  } catch (const std::exception&) {  // no memory for the box: `owned` is still ours
+    owned.reset();
+  }
+}
 
 class WorkerGroup {
  public:

@@ -1,8 +1,9 @@
 // Landmarks kept for a planner that plans again and again (LandmarkCache), made in a thread of
-// their own at the lowest priority.
+// their own at the lowest priority, which no plan ever waits for.
 #pragma once
 
 #include <atomic>
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -11,6 +12,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -31,82 +33,194 @@ namespace eaci {
 // the new costmap, so that they hold for both, and costmaps that come and go between the two
 // do not make them again each time. Plans that find none ready search with octile bounds alone:
 // the same costs, though among equally cheap routes they may pick another.
+//
+// No plan waits for the landmark thread (issue #27). move_base holds its costmap lock across a
+// whole plan, and the thread runs at nice 19: on a loaded machine it may not run for seconds, so
+// joining it (to start the next one, or in a destructor a plan runs) held the robot's costmap
+// that long. Design: every making is a *job*, a detached thread that owns everything it touches
+// through shared pointers: the cache's State (mutex, the landmarks ready, the job whose
+// landmarks are wanted, the error text), its own Job (the cancel flag), a copy of the grid, and
+// a copy of the Maker. It never touches the LandmarkCache. When it ends it stores its landmarks
+// in the State only if it is still the State's job and was not cancelled; otherwise its work is
+// dropped. The cache's destructor and a change of map size only set the job's cancel flag (the
+// destructor then drops its reference to the State: the last owner, the job if it outlives the
+// cache, frees it); MeetingSearch::useLandmarks and the service's workspace reset destroy the
+// cache, so they wait for nothing either. Nothing joins a thread, and the plan side never blocks
+// on the State's mutex: usableFor only tries it (a job holds it for a few pointer moves when it
+// ends; the plan then answers "none yet"). Several jobs may run at once for a while (a cancelled
+// one that has not yet seen its flag, and the next one); each makes only its own. A
+// ThreadStarter (tests) returns the std::thread it started: it is detached too. The process
+// may end while a job runs: it touches nothing static and nothing of the cache, only what it owns.
+//
+// Maps whose size keeps changing (gmapping grows its map every few seconds): tables for a size
+// that will be gone before any plan uses them are not started, adaptively. A table is *wasted*
+// when the map's size (width, height, move and cost rule) changes before any plan was given
+// it (cancelled in flight, or made and dropped unused). After w tables wasted in a row, a new
+// size must be seen on min(1 + w, max_settle_asks) asks in a row (usableFor is asked once a
+// plan) before a table is started for it; a table a plan uses sets w back to 0. So a static
+// map, or one that keeps its size long enough for its tables to be used, gets them from the
+// first plan on a size, as without a policy; a map that changes size on every plan or two
+// wastes one or two tables and then starts none until its size holds still. A change of size
+// cancels the job in flight (a flag: without waiting) and drops the tables of the old size
+// (they never hold on another). Measured in docs/robustness.md ("Landmarks on maps that grow").
+//
 // Nothing here reaches the plan as an exception: a failure while making them (std::bad_alloc,
 // anything) or a thread that cannot start leaves the cache without new landmarks, says why
 // (lastError()), and the next plan that asks tries again.
 class LandmarkCache {
  public:
-  // Makes landmarks (Landmarks::compute); replaceable for tests that make it fail.
+  // Makes landmarks (Landmarks::compute); replaceable for tests that make it fail or block. It
+  // runs on the job's detached thread, as a copy owned by the job, possibly after the cache is
+  // gone: it must own (or outlive) what it uses, and should return soon once `cancel` is true.
   using Maker = std::function<std::shared_ptr<const Landmarks>(const CostGrid&, int count, const std::atomic<bool>* cancel)>;
 
+  // The most asks in a row on a new size before tables for it are started, after tables
+  // were wasted (see the class comment).
+  static constexpr int kMaxSettleAsks = 4;
+
   // `count` landmarks asked for (cut to landmarksThatFit for each map). `make`, `start`: how
-  // they are made and their thread started (empty: Landmarks::compute, std::thread).
-  explicit LandmarkCache(int count, Maker make = {}, ThreadStarter start = {})
-      : count_(count), make_(std::move(make)), start_(std::move(start)) {}
+  // they are made and their thread started (empty: Landmarks::compute, std::thread); the
+  // thread is detached. `max_settle_asks`: kMaxSettleAsks of the size policy (1: no policy, a
+  // table for every size at once).
+  explicit LandmarkCache(int count, Maker make = {}, ThreadStarter start = {}, int max_settle_asks = kMaxSettleAsks)
+      : count_(count), max_settle_asks_(max_settle_asks < 1 ? 1 : max_settle_asks), make_(std::move(make)),
+        start_(std::move(start)), state_(std::make_shared<State>()), count_in_use_(count) {}
   LandmarkCache(const LandmarkCache&) = delete;
   LandmarkCache& operator=(const LandmarkCache&) = delete;
+  // Cancels the job in flight and lets it go: waits for nothing, not even the State's mutex.
   ~LandmarkCache() {
-    cancel_.store(true);
-    if (worker_.joinable()) worker_.join();
+    if (job_) job_->cancel.store(true, std::memory_order_relaxed);
   }
 
   // The count asked for.
   int count() const { return count_; }
   // The count it makes (or made) for the last map it was asked about: count() cut to what
   // fits in kMaxLandmarkBytes on that map (landmarksThatFit); count() before any.
-  int countInUse() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return count_in_use_;
-  }
-  // Why the last attempt to make landmarks failed ("" if it did not).
+  int countInUse() const { return count_in_use_.load(std::memory_order_relaxed); }
+  // Why the last attempt to make landmarks failed ("" if it did not). Takes the mutex a job
+  // holds for a few pointer moves when it ends.
   std::string lastError() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return last_error_;
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    return state_->last_error;
+  }
+  // Jobs this cache started, and jobs that stored their landmarks (for measurements and tests).
+  int jobsStarted() const { return started_.load(std::memory_order_relaxed); }
+  int jobsFinished() const {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    return state_->finished;
   }
 
-  // Landmarks whose bounds hold on `grid`, or null (then making them is under way, or none
-  // fit on this map, or they could not be made: see lastError()).
+  // Landmarks whose bounds hold on `grid`, or null (then making them is under way, or the map's
+  // size is not settled yet (the size policy), or none fit on this map, or they could not be made: see
+  // lastError()). Never waits for a landmark thread: it only tries the mutex a job takes for a
+  // few pointer moves when it ends, and answers null if that job holds it this instant.
+  // One plan at a time (the plan's thread owns the size policy's fields).
   std::shared_ptr<const Landmarks> usableFor(const CostGrid& grid) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (ready_ && ready_->holdsFor(grid)) return ready_;
-    count_in_use_ = landmarksThatFit(grid.cellCount(), count_);
-    if (computing_ || count_in_use_ == 0) return nullptr;
-    if (worker_.joinable()) worker_.join();  // finished: it cleared computing_
-    // The floor is made on the worker thread too, from a copy of the grid and the landmarks
+    const int in_use = landmarksThatFit(grid.cellCount(), count_);
+    count_in_use_.store(in_use, std::memory_order_relaxed);
+    // The size policy: a new size cancels the job in flight (a flag: no lock, no wait); a table
+    // no plan was given by then was wasted.
+    const Shape shape = Shape::of(grid);
+    if (!seen_ || !(shape == last_shape_)) {
+      if (seen_ && job_) job_->cancel.store(true, std::memory_order_relaxed);
+      if (unused_) ++wasted_in_a_row_;
+      unused_ = false;
+      asks_in_a_row_ = 1;
+      seen_ = true;
+      last_shape_ = shape;
+    } else {
+      asks_in_a_row_ = std::min(asks_in_a_row_ + 1, max_settle_asks_);
+    }
+    const int settle_asks = std::min(1 + wasted_in_a_row_, max_settle_asks_);
+    std::shared_ptr<const Landmarks> dropped;  // freed after the lock is released
+    std::unique_lock<std::mutex> lock(state_->mutex, std::try_to_lock);
+    if (!lock.owns_lock()) return nullptr;  // a job is storing its landmarks this instant
+    State& s = *state_;
+    if (s.ready && !(Shape::of(s.ready->grid()) == shape)) dropped = std::move(s.ready);  // they never hold again
+    if (s.ready && s.ready->holdsFor(grid)) {
+      unused_ = false;
+      wasted_in_a_row_ = 0;
+      return s.ready;
+    }
+    if (s.job && s.job->cancel.load(std::memory_order_relaxed)) s.job.reset();  // let go
+    if (s.job || in_use == 0 || asks_in_a_row_ < settle_asks) return nullptr;
+    // The floor is made on the job's thread too, from a copy of the grid and the landmarks
     // held: the plan that asked waits for neither.
-    std::shared_ptr<const Landmarks> held = ready_;
     try {
-      std::function<void()> body = [this, floor = grid, held, count = count_in_use_]() mutable {
-        make(std::move(floor), held, count);
+      auto job = std::make_shared<Job>();
+      std::function<void()> body = [state = state_, job, floor = grid, held = s.ready, count = in_use,
+                                    make = make_]() mutable {
+        run(*state, job, std::move(floor), std::move(held), count, make);
       };
-      worker_ = start_ ? start_(std::move(body)) : std::thread(std::move(body));
-      computing_ = true;
-      last_error_.clear();
+      std::thread thread = start_ ? start_(std::move(body)) : std::thread(std::move(body));
+      if (thread.joinable()) thread.detach();
+      s.job = job;
+      job_ = std::move(job);
+      unused_ = true;
+      started_.fetch_add(1, std::memory_order_relaxed);
+      s.last_error.clear();
     } catch (const std::exception& e) {  // no thread (std::system_error), no memory for the copy
-      last_error_ = std::string("could not start making landmarks: ") + e.what();
+      s.last_error = std::string("could not start making landmarks: ") + e.what();
     }
     return nullptr;
   }
 
  private:
-  // The worker thread's body: catches everything (an exception leaving a thread would end the
-  // process); a failure leaves the landmarks held as they were.
-  void make(CostGrid floor, const std::shared_ptr<const Landmarks>& held, int count) {
+  struct Job {
+    std::atomic<bool> cancel{false};
+  };
+  // What the cache shares with its jobs; the last owner frees it.
+  struct State {
+    std::mutex mutex;
+    std::shared_ptr<const Landmarks> ready;  // under mutex
+    std::shared_ptr<Job> job;                // under mutex: the job in flight, whose landmarks are wanted
+    std::string last_error;                  // under mutex
+    int finished = 0;                        // under mutex
+  };
+
+  // What Landmarks::sameShape compares, remembered by the size policy.
+  struct Shape {
+    int width = 0, height = 0;
+    bool corner_cutting = false;
+    double neutral_cost = 0.0, cost_factor = 0.0;
+    static Shape of(const CostGrid& g) {
+      return {g.width(), g.height(), g.allowCornerCutting(), g.costRule().neutral_cost, g.costRule().cost_factor};
+    }
+    bool operator==(const Shape& o) const {
+      return width == o.width && height == o.height && corner_cutting == o.corner_cutting &&
+             neutral_cost == o.neutral_cost && cost_factor == o.cost_factor;
+    }
+  };
+
+  // The job's body, on its detached thread: touches only what it owns. Catches everything (an
+  // exception leaving a thread would end the process); a failure leaves the landmarks held as
+  // they were.
+  static void run(State& state, const std::shared_ptr<Job>& job, CostGrid floor, std::shared_ptr<const Landmarks> held,
+                  int count, const Maker& make) {
     yieldToPlans();
     std::shared_ptr<const Landmarks> made;
     std::string error;
     try {
-      if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor);
-      made = make_ ? make_(floor, count, &cancel_) : Landmarks::compute(floor, count, &cancel_);
+      if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor, &job->cancel);
+      held.reset();
+      if (!job->cancel.load(std::memory_order_relaxed))
+        made = make ? make(floor, count, &job->cancel) : Landmarks::compute(floor, count, &job->cancel);
     } catch (const std::exception& e) {
       error = std::string("making landmarks failed: ") + e.what();
     } catch (...) {
       error = "making landmarks failed with an unknown exception";
     }
-    std::lock_guard<std::mutex> done(mutex_);
-    if (made) ready_ = std::move(made);
-    last_error_ = error;
-    computing_ = false;
+    std::shared_ptr<const Landmarks> replaced;  // freed after the lock is released
+    std::lock_guard<std::mutex> done(state.mutex);
+    if (state.job != job) return;  // superseded: its work is dropped
+    state.job.reset();
+    if (job->cancel.load(std::memory_order_relaxed)) return;  // cancelled (a new size, the cache gone)
+    if (made) {
+      replaced = std::move(state.ready);
+      state.ready = std::move(made);
+      ++state.finished;
+    }
+    state.last_error = error;
   }
 
   // The landmarks are made beside the plans that need them now: on a machine with few cores
@@ -118,24 +232,34 @@ class LandmarkCache {
 #endif
   }
 
-  // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest).
-  static void cheapestOf(const CostGrid& other, CostGrid& into) {
-    for (std::size_t i = 0; i < into.cellCount(); ++i) {
-      const std::uint8_t was = other.cellBytes()[i];
-      if (was < into.cellBytes()[i]) into.setCost(into.cellAt(i), was);  // `was` is a cost, not an obstacle
+  // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest); stops
+  // early (leaving `into` part made) once `cancel` is true, asked every kCancelPollCells cells.
+  static void cheapestOf(const CostGrid& other, CostGrid& into, const std::atomic<bool>* cancel) {
+    const std::size_t cells = into.cellCount();
+    for (std::size_t begin = 0; begin < cells; begin += kCancelPollCells) {
+      if (landmarksCancelled(cancel)) return;
+      const std::size_t end = std::min(cells, begin + kCancelPollCells);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::uint8_t was = other.cellBytes()[i];
+        if (was < into.cellBytes()[i]) into.setCost(into.cellAt(i), was);  // `was` is a cost, not an obstacle
+      }
     }
   }
 
   const int count_;
+  const int max_settle_asks_;
   const Maker make_;
   const ThreadStarter start_;
-  mutable std::mutex mutex_;
-  std::shared_ptr<const Landmarks> ready_;  // under mutex_
-  bool computing_ = false;                  // under mutex_
-  int count_in_use_ = count_;               // under mutex_
-  std::string last_error_;                  // under mutex_
-  std::thread worker_;
-  std::atomic<bool> cancel_{false};
+  const std::shared_ptr<State> state_;
+  std::atomic<int> count_in_use_;     // countInUse
+  std::atomic<int> started_{0};       // jobsStarted
+  // The plan's (usableFor, one plan at a time): the job it started last, to cancel; the size policy.
+  std::shared_ptr<Job> job_;
+  bool seen_ = false;
+  Shape last_shape_;
+  int asks_in_a_row_ = 0;    // on last_shape_, counted up to max_settle_asks_
+  bool unused_ = false;      // a table was started and no plan has been given one since
+  int wasted_in_a_row_ = 0;  // tables started that no plan was given before the size changed
 };
 
 }  // namespace eaci

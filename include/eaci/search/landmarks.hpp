@@ -45,6 +45,15 @@ inline int landmarksThatFit(std::size_t cells, int requested) {
   return static_cast<int>(std::min(fit, static_cast<std::size_t>(requested)));
 }
 
+// Making landmarks may be cancelled (LandmarkCache: a change of map size, the cache destroyed):
+// every loop over the map's cells asks the flag once per kCancelPollCells cells (a relaxed
+// atomic load per 64 Ki cells costs nothing beside them) and the searches once per 4096 cells
+// they take, so a cancelled making ends within some 100 microseconds of the thread running.
+constexpr std::size_t kCancelPollCells = std::size_t{1} << 16;
+inline bool landmarksCancelled(const std::atomic<bool>* cancel) {
+  return cancel != nullptr && cancel->load(std::memory_order_relaxed);
+}
+
 class Landmarks {
  public:
   // `count` landmarks on `grid` by farthest selection: the first is the cell farthest from a
@@ -55,35 +64,47 @@ class Landmarks {
   static std::shared_ptr<const Landmarks> compute(const CostGrid& grid, int count,
                                                   const std::atomic<bool>* cancel = nullptr) {
     count = landmarksThatFit(grid.cellCount(), count);
-    if (count <= 0) return nullptr;
-    auto landmarks = std::shared_ptr<Landmarks>(new Landmarks(grid));
+    if (count <= 0 || landmarksCancelled(cancel)) return nullptr;
+    const std::size_t cells_in_grid = grid.cellCount();
     const std::uint8_t* cells = grid.cellBytes();
     std::size_t free_count = 0;
-    for (std::size_t i = 0; i < grid.cellCount(); ++i) free_count += cells[i] != CostGrid::kObstacle;
-    if (free_count == 0 || count <= 0) return nullptr;
+    for (std::size_t begin = 0; begin < cells_in_grid; begin += kCancelPollCells) {
+      if (landmarksCancelled(cancel)) return nullptr;
+      const std::size_t end = std::min(cells_in_grid, begin + kCancelPollCells);
+      for (std::size_t i = begin; i < end; ++i) free_count += cells[i] != CostGrid::kObstacle;
+    }
+    if (free_count == 0) return nullptr;
     std::size_t seed = 0;
-    for (std::size_t i = 0, seen = 0; i < grid.cellCount(); ++i)
+    for (std::size_t i = 0, seen = 0; i < cells_in_grid; ++i) {
+      if ((i % kCancelPollCells) == 0 && landmarksCancelled(cancel)) return nullptr;
       if (cells[i] != CostGrid::kObstacle && seen++ == free_count / 2) {
         seed = i;
         break;
       }
-    std::vector<double> distance(grid.cellCount());
-    std::vector<double> nearest_landmark(grid.cellCount(), std::numeric_limits<double>::infinity());
+    }
+    auto landmarks = std::shared_ptr<Landmarks>(new Landmarks(grid));  // a copy of the cells: a memcpy
+    if (landmarksCancelled(cancel)) return nullptr;
+    std::vector<double> distance(cells_in_grid);
+    std::vector<double> nearest_landmark(cells_in_grid, std::numeric_limits<double>::infinity());
     detail::BucketQueue open;
     if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
-    seed = farthest(distance, seed);
+    if (!farthest(distance, seed, cancel)) return nullptr;
     landmarks->count_ = count;
-    landmarks->distance_.assign(grid.cellCount() * static_cast<std::size_t>(count), kUnreached);
+    landmarks->distance_.assign(cells_in_grid * static_cast<std::size_t>(count), kUnreached);
     double largest = 0.0;
     for (int k = 0; k < count; ++k) {
       if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
-      for (std::size_t i = 0; i < distance.size(); ++i) {
-        if (!std::isfinite(distance[i])) continue;
-        landmarks->distance_[i * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)] = static_cast<float>(distance[i]);
-        largest = std::max(largest, distance[i]);
-        nearest_landmark[i] = std::min(nearest_landmark[i], distance[i]);
+      for (std::size_t begin = 0; begin < cells_in_grid; begin += kCancelPollCells) {
+        if (landmarksCancelled(cancel)) return nullptr;
+        const std::size_t end = std::min(cells_in_grid, begin + kCancelPollCells);
+        for (std::size_t i = begin; i < end; ++i) {
+          if (!std::isfinite(distance[i])) continue;
+          landmarks->distance_[i * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)] = static_cast<float>(distance[i]);
+          largest = std::max(largest, distance[i]);
+          nearest_landmark[i] = std::min(nearest_landmark[i], distance[i]);
+        }
       }
-      seed = farthest(nearest_landmark, seed);
+      if (!farthest(nearest_landmark, seed, cancel)) return nullptr;
     }
     // As floats, each distance is off by at most largest x 2^-24, and so is the difference of
     // two; a bound is then off by at most 3 x that, and shrinking every bound by a factor
@@ -152,7 +173,12 @@ class Landmarks {
   // unreached; false when cancelled.
   static bool symmetricCosts(const CostGrid& grid, std::size_t source, std::vector<double>& distance,
                              detail::BucketQueue& open, const std::atomic<bool>* cancel) {
-    std::fill(distance.begin(), distance.end(), std::numeric_limits<double>::infinity());
+    for (std::size_t begin = 0; begin < distance.size(); begin += kCancelPollCells) {
+      if (landmarksCancelled(cancel)) return false;
+      const std::size_t end = std::min(distance.size(), begin + kCancelPollCells);
+      std::fill(distance.begin() + static_cast<std::ptrdiff_t>(begin), distance.begin() + static_cast<std::ptrdiff_t>(end),
+                std::numeric_limits<double>::infinity());
+    }
     distance[source] = 0.0;
     open.clear();
     open.push(0.0, detail::BucketEntry{0.0, static_cast<std::uint32_t>(source)});
@@ -175,12 +201,16 @@ class Landmarks {
     return true;
   }
 
-  // The reached cell of largest `distance` (the lowest index on ties); `fallback` if none.
-  static std::size_t farthest(const std::vector<double>& distance, std::size_t fallback) {
-    std::size_t best = fallback;
-    for (std::size_t i = 0; i < distance.size(); ++i)
-      if (std::isfinite(distance[i]) && distance[i] > distance[best]) best = i;
-    return best;
+  // Sets `best` (in: the fallback) to the reached cell of largest `distance` (the lowest index
+  // on ties), unchanged if none; false when cancelled.
+  static bool farthest(const std::vector<double>& distance, std::size_t& best, const std::atomic<bool>* cancel) {
+    for (std::size_t begin = 0; begin < distance.size(); begin += kCancelPollCells) {
+      if (landmarksCancelled(cancel)) return false;
+      const std::size_t end = std::min(distance.size(), begin + kCancelPollCells);
+      for (std::size_t i = begin; i < end; ++i)
+        if (std::isfinite(distance[i]) && distance[i] > distance[best]) best = i;
+    }
+    return true;
   }
 
   CostGrid floor_;               // the grid the distances were computed on

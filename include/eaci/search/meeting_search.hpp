@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "eaci/grid/cell_window.hpp"
@@ -126,9 +127,11 @@ class MeetingSearch {
     if (cost != nullptr) *cost = std::numeric_limits<double>::infinity();
     expanded_ = 0;
     stopped_ = false;
+    used_landmarks_ = false;
     if (!grid.isFree(source) || !grid.isFree(target)) return route;
     const std::shared_ptr<const Landmarks> landmarks = landmarks_ ? landmarks_->usableFor(grid) : nullptr;
     const detail::MeetingBounds bounds(source, target, grid.index(source), grid.index(target), landmarks.get());
+    used_landmarks_ = bounds.landmarks != nullptr;
     const double span = bounds.span;
     const StopPoll side_stop = stop != nullptr ? stop->forAnotherThread() : StopPoll{};
     detail::MeetingSide sides[2] = {{labels_.of(0), &forward_open_, &touched_[0].cells, &bounds, true, side_stop},
@@ -200,11 +203,16 @@ class MeetingSearch {
   // Keep `count` landmarks (Landmarks, LandmarkCache): made in the background on the first
   // costmap it searches, used by later searches on that costmap (or a costlier one). 0 (the
   // default): none, octile bounds alone. For callers that plan many times on one costmap; a
-  // change of count drops the landmarks kept.
-  void useLandmarks(int count) {
+  // change of count drops the landmarks kept: the cache's job in flight is cancelled and let
+  // go, not waited for (LandmarkCache). `make`, `start`, `max_settle_asks`: how a new cache
+  // makes them, starts its thread and settles a map size (LandmarkCache's; empty:
+  // Landmarks::compute, std::thread, LandmarkCache::kMaxSettleAsks).
+  void useLandmarks(int count, LandmarkCache::Maker make = {}, ThreadStarter start = {},
+                    int max_settle_asks = LandmarkCache::kMaxSettleAsks) {
     if (count == (landmarks_ ? landmarks_->count() : 0)) return;
     landmarks_.reset();
-    if (count > 0) landmarks_ = std::make_unique<LandmarkCache>(count);
+    if (count > 0)
+      landmarks_ = std::make_unique<LandmarkCache>(count, std::move(make), std::move(start), max_settle_asks);
   }
   // The landmark cache (null without useLandmarks): how many landmarks fit, why making them
   // failed, the landmarks that hold on a grid (LandmarkCache::usableFor).
@@ -214,6 +222,8 @@ class MeetingSearch {
   std::size_t expandedCells() const { return expanded_; }
   // The last search was ended by its stop check and returned no route.
   bool stopped() const { return stopped_; }
+  // The last search had landmark bounds (for benchmarks).
+  bool usedLandmarks() const { return used_landmarks_; }
 
  private:
   static constexpr int kFirstMeetingRound = 16;
@@ -230,6 +240,7 @@ class MeetingSearch {
   std::unique_ptr<LandmarkCache> landmarks_;  // useLandmarks
   std::size_t expanded_ = 0;                   // expandedCells
   bool stopped_ = false;                       // stopped()
+  bool used_landmarks_ = false;                // usedLandmarks()
 };
 
 }  // namespace eaci
