@@ -22,7 +22,7 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
     costmap_ros_ = costmap_ros;
     planner_ = std::make_unique<RosPlanner>(ros::NodeHandle("~/" + name),
                                             RosPlanner::Setup{"EaciGlobalPlanner " + name, false,
-                                                              [this] { return copyCostmap(); }, {}});
+                                                              [this] { return copyCostmap(); }, {}, true});
   } catch (const std::exception& e) {
     planner_.reset();
     ROS_ERROR("EaciGlobalPlanner %s: cannot start: %s (every plan will fail)", name.c_str(), e.what());

@@ -35,6 +35,7 @@ RosPlanner::RosPlanner(const ros::NodeHandle& private_nh, Setup setup) : setup_(
   private_nh.param("save_costmap_on_failure", settings.save_costmap_on_failure, false);
   private_nh.param("save_costmap_keep", settings.save_costmap_keep, 10);
   settings.shutting_down = [] { return !ros::ok() || ros::isShuttingDown(); };
+  settings.stand_in_for_emptied_costmaps = setup_.from_costmap_2d;
   service_ = std::make_unique<PlanningService>(std::move(settings), &logLine);
   config_ = std::make_unique<PlannerConfiguration>(
       private_nh, setup_.who,

@@ -37,6 +37,9 @@ class RosPlanner {
     bool latch_plan = false;       // the node latches ~plan
     CostmapSource costmap;
     PoseTransform transform;       // optional
+    // The costmaps are costmap_2d's (the plugin): plan on one it has emptied (resized or cleared,
+    // not yet updated) as the last filled one showed it (ServiceSettings).
+    bool from_costmap_2d = false;
   };
 
   // Reads the parameters under `private_nh` (plus ~save_costmap_dir, ~save_costmap_on_failure,

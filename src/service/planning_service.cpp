@@ -45,7 +45,10 @@ const char* toString(StopReason reason) {
 }
 
 PlanningService::PlanningService(ServiceSettings settings, Logger log)
-    : settings_(std::move(settings)), log_(std::move(log)) {
+    : settings_(std::move(settings)),
+      log_(std::move(log)),
+      emptied_stand_in_(std::chrono::duration_cast<EmptiedCostmapStandIn::Clock::duration>(
+          std::chrono::duration<double>(std::max(0.0, settings_.emptied_costmap_wait)))) {
   config_.params = rosDefaultParameters();
   writer_ = std::make_unique<ReplayWriter>(settings_.save_costmap_dir, settings_.save_costmap_keep,
                                            [this](const std::string& line, bool ok) {
@@ -232,6 +235,11 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   if (costmap.cells.size() != cell_count)
     return failure("the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
                    " it claims");
+  if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
+    const std::string stood_in = emptied_stand_in_.standIn(costmap, std::chrono::steady_clock::now());
+    if (!stood_in.empty() && stood_in != emptied_reported_) say(LogLevel::kInfo, stood_in);
+    emptied_reported_ = stood_in;
+  }
 
   const auto start_cell = frame.worldToCell(request.start);
   if (!start_cell) return failure("start " + where(request.start) + " is off the costmap");

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "costmap_replay.hpp"
+#include "costmap_reset.hpp"
 #include "costmap_snapshot.hpp"
 #include "eaci/planner.hpp"
 #include "plan_cancellation.hpp"
@@ -54,6 +55,11 @@ struct ServiceSettings {
   std::function<void(eaci::CellPath&)> smoothed_path_hook;
   // How landmarks are made (tests: a maker that blocks or fails); empty: Landmarks::compute.
   eaci::LandmarkCache::Maker landmark_maker;
+  // The costmaps come from costmap_2d (the move_base plugin), which empties a costmap it resizes
+  // or clears until its next update: plan on such an emptied costmap as the last filled one
+  // showed it, for up to emptied_costmap_wait seconds (costmap_reset.hpp). Off for the node's maps.
+  bool stand_in_for_emptied_costmaps = false;
+  double emptied_costmap_wait = 5.0;
 };
 
 struct PlanRequest {
@@ -140,6 +146,8 @@ class PlanningService {
   std::optional<eaci::MapFrame> last_frame_;  // the plan's
   int moves_in_a_row_ = 0;                    // the plan's
   bool rolling_ = false;                      // the plan's
+  EmptiedCostmapStandIn emptied_stand_in_;    // the plan's
+  std::string emptied_reported_;              // the plan's: the stand-in's sentence last said
   int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)
   std::string landmark_error_reported_;       // the plan's
 

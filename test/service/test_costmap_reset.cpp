@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "costmap_reset.hpp"
+#include "service_test_support.hpp"
 
 namespace eaci_ros {
 namespace {
@@ -108,6 +109,45 @@ TEST(CostmapReset, AnEmptyMapIsPlannedOnAsItIsWhenNothingWasFilledOrTheWaitRanOu
   emptied = uniform(2, 2, 0);
   EXPECT_EQ(stand_in.standIn(emptied, t0 + std::chrono::milliseconds(4001)), "");  // past 3 s: as it is
   EXPECT_EQ(emptied.cells, uniform(2, 2, 0).cells);
+}
+
+// Through the service, as move_base's planner sees a SLAM map grow: a plan on a 10 x 5 costmap
+// with a wall down column 5 (rows 0-3; the way round is row 4), then the costmap resized to
+// 12 x 5 and emptied to unknown (every cell 255) before its update. From (2, 1) to (2, 8) the
+// only routes round the wall pass row 4; a straight line crosses it at row 2.
+bool crossesTheWall(const eaci::CellPath& path) {
+  for (const eaci::Cell& c : path)
+    if (c.col == 5 && c.row <= 3) return true;
+  return false;
+}
+
+PlanReply planOnAGrownEmptiedCostmap(bool stand_in) {
+  ServiceSettings settings;
+  settings.stand_in_for_emptied_costmaps = stand_in;
+  PlanningService service(settings, Logger{});
+  test::configure(service, test::configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot filled = test::openCostmap(10, 5);
+  for (int row = 0; row <= 3; ++row) test::at(filled, row, 5) = kCostmapLethal;
+  const PlanReply first = service.plan(filled, test::request(filled, {2, 1}, {2, 8}));
+  EXPECT_TRUE(first.ok) << first.error;
+  EXPECT_FALSE(crossesTheWall(first.result.path));
+  CostmapSnapshot emptied = test::openCostmap(12, 5);
+  std::fill(emptied.cells.begin(), emptied.cells.end(), kCostmapUnknown);
+  return service.plan(emptied, test::request(emptied, {2, 1}, {2, 8}));
+}
+
+TEST(CostmapReset, APlanOnAnEmptiedCostmapKeepsToTheWallsTheLastOneShowed) {
+  const PlanReply reply = planOnAGrownEmptiedCostmap(true);
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_FALSE(crossesTheWall(reply.result.path));
+  EXPECT_FALSE(crossesTheWall(reply.result.smoothed_path));
+  EXPECT_EQ(reply.frame.width, 12);
+}
+
+TEST(CostmapReset, WithoutTheStandInTheEmptiedCostmapShowsNoWall) {  // what the stand-in is for
+  const PlanReply reply = planOnAGrownEmptiedCostmap(false);
+  ASSERT_TRUE(reply.ok) << reply.error;
+  EXPECT_TRUE(crossesTheWall(reply.result.path));
 }
 
 }  // namespace
