@@ -408,9 +408,15 @@ std::shared_ptr<const eaci::Landmarks> landmarksOnceMade(eaci::LandmarkCache& ca
 // threads: the count lives in a state each thread owns a share of.
 class FinishedThreads {
  public:
+  // `hold`: the threads start their bodies only once release() is called.
+  explicit FinishedThreads(bool hold = false) { state_->held = hold; }
   eaci::ThreadStarter starter() {
     return [state = state_](std::function<void()> body) {
       return std::thread([state, body = std::move(body)]() mutable {
+        {
+          std::unique_lock<std::mutex> lock(state->mutex);
+          state->changed.wait(lock, [&] { return !state->held; });
+        }
         body();
         body = nullptr;  // what the job owns goes before it counts as finished
         std::lock_guard<std::mutex> lock(state->mutex);
@@ -418,6 +424,11 @@ class FinishedThreads {
         state->changed.notify_all();
       });
     };
+  }
+  void release() {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    state_->held = false;
+    state_->changed.notify_all();
   }
   // Waits (two minutes at most) until `count` threads have finished; false if they did not.
   bool waitFor(int count) {
@@ -429,6 +440,7 @@ class FinishedThreads {
   struct State {
     std::mutex mutex;
     std::condition_variable changed;
+    bool held = false;
     int finished = 0;
   };
   std::shared_ptr<State> state_ = std::make_shared<State>();
@@ -598,7 +610,7 @@ TEST(Landmarks, DestroyingTheCacheOrItsOwnersReturnsWhileTheMakerIsStillBlocked)
 // a table a plan was given makes it eager again. With max_settle_asks 1 (no policy) every size
 // starts a job, each cancelling the one before.
 TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
-  FinishedThreads threads;
+  FinishedThreads threads(true);  // held while the sizes change: no job ends meanwhile
   eaci::LandmarkCache cache(2, {}, threads.starter());
   EXPECT_EQ(eaci::LandmarkCache::kMaxSettleAsks, 4);
   const auto ask = [&](int size) { return cache.usableFor(CostGrid(size, size, false)); };
@@ -614,6 +626,7 @@ TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
   EXPECT_EQ(cache.jobsStarted(), 2);
   EXPECT_EQ(ask(52), nullptr);
   EXPECT_EQ(cache.jobsStarted(), 3);
+  threads.release();
   ASSERT_TRUE(threads.waitFor(3));
   const CostGrid settled(52, 52, false);
   const auto made = cache.usableFor(settled);  // given to a plan: eager again
@@ -623,10 +636,11 @@ TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
   EXPECT_EQ(cache.jobsStarted(), 4);
   ASSERT_TRUE(threads.waitFor(4));
 
-  FinishedThreads eager_threads;
+  FinishedThreads eager_threads(true);
   eaci::LandmarkCache eager(2, {}, eager_threads.starter(), 1);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(eager.usableFor(CostGrid(40 + 4 * k, 40, false)), nullptr);
   EXPECT_EQ(eager.jobsStarted(), 4);
+  eager_threads.release();
   ASSERT_TRUE(eager_threads.waitFor(4));
 }
 
