@@ -551,6 +551,33 @@ TEST(Landmarks, ANewMapSizeReturnsWhileTheMakerIsStillBlocked) {
   EXPECT_EQ(cache->jobsFinished(), 1);
 }
 
+// (a') The job is done but its thread has not ended (a nice-19 thread on a loaded machine is
+// late to end, and the cache used to join it before starting the next job and in its
+// destructor): neither a new job nor the cache's destruction waits for that thread.
+TEST(Landmarks, AFinishedJobWhoseThreadHasNotEndedIsNotWaitedFor) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  eaci::ThreadStarter late_to_end = [gate](std::function<void()> body) {
+    return std::thread([gate, body = std::move(body)]() mutable {
+      body();
+      body = nullptr;
+      gate->hold();
+    });
+  };
+  const CostGrid grid(64, 64, false), larger(80, 64, false);
+  auto cache = std::make_shared<std::unique_ptr<eaci::LandmarkCache>>(
+      std::make_unique<eaci::LandmarkCache>(2, eaci::LandmarkCache::Maker{}, late_to_end, 1));
+  EXPECT_EQ((*cache)->usableFor(grid), nullptr);
+  ASSERT_TRUE(gate->waitEntered(1));  // the job is done; its thread has not ended
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [cache, grid, larger] {
+    ASSERT_NE((*cache)->usableFor(grid), nullptr);  // the job's landmarks
+    EXPECT_EQ((*cache)->usableFor(larger), nullptr);   // a new size: a new job at once (no policy)
+    EXPECT_EQ((*cache)->jobsStarted(), 2);
+    cache->reset();
+  }));
+  gate->release();
+  ASSERT_TRUE(gate->waitLeft(1));
+}
+
 // (b) A change of count (a rolling window: useLandmarks(0), then landmarks again) drops the
 // cache whose maker is blocked, and the next search runs (without landmarks) at once.
 TEST(Landmarks, AChangeOfCountReturnsWhileTheMakerIsStillBlocked) {
