@@ -46,6 +46,18 @@ class LandmarkGate {
     };
   }
 
+  // Blocks until release(), counted as a call that entered and, once released, left: for a
+  // thread that ends late after its job (a ThreadStarter's thread, as a nice-19 thread on a
+  // loaded machine is late to end).
+  void hold() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    ++entered_;
+    changed_.notify_all();
+    changed_.wait(lock, [&] { return released_; });
+    ++left_;
+    changed_.notify_all();
+  }
+
   void release() {
     std::lock_guard<std::mutex> lock(mutex_);
     released_ = true;

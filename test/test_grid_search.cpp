@@ -408,9 +408,15 @@ std::shared_ptr<const eaci::Landmarks> landmarksOnceMade(eaci::LandmarkCache& ca
 // threads: the count lives in a state each thread owns a share of.
 class FinishedThreads {
  public:
+  // `hold`: the threads start their bodies only once release() is called.
+  explicit FinishedThreads(bool hold = false) { state_->held = hold; }
   eaci::ThreadStarter starter() {
     return [state = state_](std::function<void()> body) {
       return std::thread([state, body = std::move(body)]() mutable {
+        {
+          std::unique_lock<std::mutex> lock(state->mutex);
+          state->changed.wait(lock, [&] { return !state->held; });
+        }
         body();
         body = nullptr;  // what the job owns goes before it counts as finished
         std::lock_guard<std::mutex> lock(state->mutex);
@@ -418,6 +424,11 @@ class FinishedThreads {
         state->changed.notify_all();
       });
     };
+  }
+  void release() {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    state_->held = false;
+    state_->changed.notify_all();
   }
   // Waits (two minutes at most) until `count` threads have finished; false if they did not.
   bool waitFor(int count) {
@@ -429,6 +440,7 @@ class FinishedThreads {
   struct State {
     std::mutex mutex;
     std::condition_variable changed;
+    bool held = false;
     int finished = 0;
   };
   std::shared_ptr<State> state_ = std::make_shared<State>();
@@ -539,6 +551,33 @@ TEST(Landmarks, ANewMapSizeReturnsWhileTheMakerIsStillBlocked) {
   EXPECT_EQ(cache->jobsFinished(), 1);
 }
 
+// (a') The job is done but its thread has not ended (a nice-19 thread on a loaded machine is
+// late to end, and the cache used to join it before starting the next job and in its
+// destructor): neither a new job nor the cache's destruction waits for that thread.
+TEST(Landmarks, AFinishedJobWhoseThreadHasNotEndedIsNotWaitedFor) {
+  auto gate = std::make_shared<eaci_test::LandmarkGate>();
+  eaci::ThreadStarter late_to_end = [gate](std::function<void()> body) {
+    return std::thread([gate, body = std::move(body)]() mutable {
+      body();
+      body = nullptr;
+      gate->hold();
+    });
+  };
+  const CostGrid grid(64, 64, false), larger(80, 64, false);
+  auto cache = std::make_shared<std::unique_ptr<eaci::LandmarkCache>>(
+      std::make_unique<eaci::LandmarkCache>(2, eaci::LandmarkCache::Maker{}, late_to_end, 1));
+  EXPECT_EQ((*cache)->usableFor(grid), nullptr);
+  ASSERT_TRUE(gate->waitEntered(1));  // the job is done; its thread has not ended
+  EXPECT_TRUE(eaci_test::returnsWhileTheMakerIsBlocked(gate, [cache, grid, larger] {
+    ASSERT_NE((*cache)->usableFor(grid), nullptr);  // the job's landmarks
+    EXPECT_EQ((*cache)->usableFor(larger), nullptr);   // a new size: a new job at once (no policy)
+    EXPECT_EQ((*cache)->jobsStarted(), 2);
+    cache->reset();
+  }));
+  gate->release();
+  ASSERT_TRUE(gate->waitLeft(1));
+}
+
 // (b) A change of count (a rolling window: useLandmarks(0), then landmarks again) drops the
 // cache whose maker is blocked, and the next search runs (without landmarks) at once.
 TEST(Landmarks, AChangeOfCountReturnsWhileTheMakerIsStillBlocked) {
@@ -598,7 +637,7 @@ TEST(Landmarks, DestroyingTheCacheOrItsOwnersReturnsWhileTheMakerIsStillBlocked)
 // a table a plan was given makes it eager again. With max_settle_asks 1 (no policy) every size
 // starts a job, each cancelling the one before.
 TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
-  FinishedThreads threads;
+  FinishedThreads threads(true);  // held while the sizes change: no job ends meanwhile
   eaci::LandmarkCache cache(2, {}, threads.starter());
   EXPECT_EQ(eaci::LandmarkCache::kMaxSettleAsks, 4);
   const auto ask = [&](int size) { return cache.usableFor(CostGrid(size, size, false)); };
@@ -614,6 +653,7 @@ TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
   EXPECT_EQ(cache.jobsStarted(), 2);
   EXPECT_EQ(ask(52), nullptr);
   EXPECT_EQ(cache.jobsStarted(), 3);
+  threads.release();
   ASSERT_TRUE(threads.waitFor(3));
   const CostGrid settled(52, 52, false);
   const auto made = cache.usableFor(settled);  // given to a plan: eager again
@@ -623,10 +663,11 @@ TEST(Landmarks, TablesForANewSizeStartOnlyOnceTheSizeIsSettled) {
   EXPECT_EQ(cache.jobsStarted(), 4);
   ASSERT_TRUE(threads.waitFor(4));
 
-  FinishedThreads eager_threads;
+  FinishedThreads eager_threads(true);
   eaci::LandmarkCache eager(2, {}, eager_threads.starter(), 1);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(eager.usableFor(CostGrid(40 + 4 * k, 40, false)), nullptr);
   EXPECT_EQ(eager.jobsStarted(), 4);
+  eager_threads.release();
   ASSERT_TRUE(eager_threads.waitFor(4));
 }
 
