@@ -20,8 +20,7 @@ constexpr std::uint8_t kDearestPassableCost = 252;
 // What an unknown cell is: an obstacle, or passable at the dearest cost a passable cell can
 // have (allow_unknown), as navfn (COST_OBS - 1) and global_planner (lethal_cost - 1) price it:
 // a route crosses unknown space only where every way round through known space costs more.
-// kFree is the former name of kExpensive (it meant cost 0 then); it is kept so older code builds.
-enum class UnknownPolicy { kObstacle, kExpensive, kFree = kExpensive };
+enum class UnknownPolicy { kObstacle, kExpensive };
 
 // Byte value -> obstacle or cost: the one interpreter of map bytes, whatever their source.
 // A value equal to `unknown_value` is unknown: an obstacle, or (kExpensive, unknown cells
