@@ -12,7 +12,7 @@
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/grid/map_frame.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // costmap_2d's cost values (costmap_2d/cost_values.h), for code that has no ROS headers.
 constexpr std::uint8_t kCostmapFree = 0;
@@ -35,4 +35,4 @@ struct CostmapSnapshot {
   }
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -15,7 +15,7 @@
 #include "route_defect.hpp"
 #include "start_cell.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 std::string where(const Eigen::Vector2d& p) {
@@ -401,4 +401,4 @@ std::string PlanningService::saveCostmap(CostmapSnapshot costmap, ReplayFiles& f
   }
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -32,7 +32,7 @@
 #include "planner_options.hpp"
 #include "replay_writer.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // Why a plan stopped before it was done.
 enum class StopReason { kNone, kTimeLimit, kCancelled, kShutdown };
@@ -159,4 +159,4 @@ class PlanningService {
   std::unique_ptr<ReplayWriter> writer_;
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -8,7 +8,7 @@
 #include "costmap_reset.hpp"
 #include "service_test_support.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 using Clock = EmptiedCostmapStandIn::Clock;
@@ -151,4 +151,4 @@ TEST(CostmapReset, WithoutTheStandInTheEmptiedCostmapShowsNoWall) {  // what the
 }
 
 }  // namespace
-}  // namespace eaci_ros
+}  // namespace eaci_service

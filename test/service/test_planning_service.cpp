@@ -26,8 +26,8 @@
 
 namespace {
 
-using namespace eaci_ros;
-using namespace eaci_ros::test;
+using namespace eaci_service;
+using namespace eaci_service::test;
 namespace fs = std::filesystem;
 
 struct Log {

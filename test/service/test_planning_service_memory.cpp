@@ -65,8 +65,8 @@ void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::f
 
 namespace {
 
-using namespace eaci_ros;
-using namespace eaci_ros::test;
+using namespace eaci_service;
+using namespace eaci_service::test;
 
 void failEveryAllocationInTurn(eaci::Algorithm algorithm, int threads) {
   PlanningService service(ServiceSettings{}, Logger{});
