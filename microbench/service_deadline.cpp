@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     const auto begin = std::chrono::steady_clock::now();
     const eaci_service::PlanReply reply = service.plan(std::move(copy), request);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
-    planned += reply.ok;
+    planned += reply.ok();
     stopped += reply.stopped_by == eaci_service::StopReason::kTimeLimit ||
                reply.error.find("max_planning_time") != std::string::npos;
   }

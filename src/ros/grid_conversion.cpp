@@ -83,16 +83,6 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
   return eaci::inflatedCosts(view, grid.info.resolution, inflation);
 }
 
-eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int height, int lethal_cost,
-                        bool allow_unknown) {
-  if (costs.empty() || costs.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    return eaci::GridView();
-  eaci::CellInterpretation interpretation =
-      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(std::clamp(lethal_cost, 1, 255)), allow_unknown);
-  interpretation.unknown_value = eaci::kCostmapNoInformation;
-  return eaci::GridView(costs.data(), width, height, eaci::RowOrder::kTopFirst, interpretation);
-}
-
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation) {
   nav_msgs::Path path;

@@ -27,6 +27,9 @@
 
 namespace eaci_ros {
 
+// The ROS-free planning service (src/service) is what these adapters wrap.
+using namespace eaci_service;
+
 using PlannerConfig = eaci_planner::EaciPlannerConfig;
 
 // Every value of `config` by name, as setRosParameter() reads it.
