@@ -55,7 +55,7 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
 eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool allow_unknown) {
   eaci::CellInterpretation interpretation;
   interpretation.lethal_cost = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
-  interpretation.unknown_value = 255;  // int8 -1
+  interpretation.unknown_value = eaci::kCostmapUnknown;  // int8 -1 read as a byte
   interpretation.unknown = allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle;
   const std::size_t cells = static_cast<std::size_t>(grid.info.width) * grid.info.height;
   if (grid.data.size() != cells || cells == 0) return eaci::GridView();

@@ -19,9 +19,7 @@ namespace eaci_service {
 namespace {
 
 std::string where(const Eigen::Vector2d& p) {
-  char text[96];
-  std::snprintf(text, sizeof(text), "(%.3f, %.3f)", p.x(), p.y());
-  return text;
+  return "(" + eaci::formatNumber(p.x(), 3) + ", " + eaci::formatNumber(p.y(), 3) + ")";
 }
 
 std::string sizeOf(const eaci::MapFrame& frame) {

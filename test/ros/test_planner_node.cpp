@@ -100,9 +100,9 @@ TEST_F(PlannerNode, BadRequestsGetAnEmptyPlanNamingTheirFaultAndTheNodeStaysUp) 
                     {"goal (0.025, 0.025) is in an obstacle and no free cell lies within 0 m of it"});
   // Start in the wall.
   EXPECT_FALSE(freeAt(0.025, 1.0));
-  expectRefusedWith(mapPose(0.025, 1.0), mapPose(4.4, 2.6), {"start (0.025, 1.000): the start is in a lethal obstacle"});
+  expectRefusedWith(mapPose(0.025, 1.0), mapPose(4.4, 2.6), {"start (0.025, 1): the start is in a lethal obstacle"});
   // Off the map (4.8 x 3.0 m from the origin).
-  expectRefusedWith(mapPose(0.4, 0.4), mapPose(10.0, 10.0), {"goal (10.000, 10.000) is off the costmap"});
+  expectRefusedWith(mapPose(0.4, 0.4), mapPose(10.0, 10.0), {"goal (10, 10) is off the costmap"});
   expectRefusedWith(mapPose(-1.0, 0.4), mapPose(4.4, 2.6), {"start (-1.000, 0.400) is off the costmap"});
   // A frame nobody publishes.
   expectRefusedWith(mapPose(0.4, 0.4, "nowhere"), mapPose(4.4, 2.6),

@@ -139,7 +139,7 @@ TEST(PlanningService, AStartInALethalCellFailsNamingIt) {
   EXPECT_EQ(reply.outcome, PlanOutcome::kStartBlocked) << reply.error;
   EXPECT_FALSE(reply.ok());
   // The sentence names where the start is (what a person reading the log needs).
-  EXPECT_NE(reply.error.find("start (4.500, 5.500)"), std::string::npos) << reply.error;
+  EXPECT_NE(reply.error.find("start (4.5, 5.5)"), std::string::npos) << reply.error;
 }
 
 TEST(PlanningService, AStartWalledInByLethalCellsFailsWithTheReason) {
