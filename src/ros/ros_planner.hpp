@@ -50,7 +50,8 @@ class RosPlanner {
   ~RosPlanner();
 
   // Plans from `start` to `goal` (poses in the costmap's frame). false with a log line naming
-  // the outcome (toName(PlanOutcome)) and the reason; `plan` empty then. tolerance < 0: default_tolerance. Never throws.
+  // the outcome (toName(PlanOutcome)) and the reason; `plan` empty then. tolerance < 0:
+  // default_tolerance. Never throws.
   bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal, double tolerance,
                 std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
 

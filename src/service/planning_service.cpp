@@ -252,16 +252,19 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   const auto stop_outcome = [&] { return stoppedOutcome(static_cast<StopReason>(stop_reason.load())); };
 
   const eaci::MapFrame& frame = costmap.frame;
-  if (frame.width <= 0 || frame.height <= 0) return failure(PlanOutcome::kBadCostmap, "the costmap is empty (" + sizeOf(frame) + ")");
+  if (frame.width <= 0 || frame.height <= 0)
+    return failure(PlanOutcome::kBadCostmap, "the costmap is empty (" + sizeOf(frame) + ")");
   if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
-    return failure(PlanOutcome::kBadCostmap, "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
+    return failure(PlanOutcome::kBadCostmap,
+                   "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
   const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
   if (cell_count > kMaxCostmapCells)
-    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
-                   std::to_string(kMaxCostmapCells) + " cells");
+    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) +
+                                                 " is larger than the planner's cap of " +
+                                                 std::to_string(kMaxCostmapCells) + " cells");
   if (costmap.cells.size() != cell_count)
-    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
-                   " it claims");
+    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells.size()) +
+                                                 " cells, not the " + sizeOf(frame) + " it claims");
   if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
     const std::string stood_in = emptied_stand_in_.standIn(costmap, std::chrono::steady_clock::now());
     if (!stood_in.empty() && stood_in != emptied_reported_) say(LogLevel::kInfo, stood_in);
@@ -294,13 +297,16 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   // start finds the nearest reachable cell (a free cell behind a wall must not win).
   const double radius_cells = tolerance / frame.resolution;
   const auto stopped_while = [&](const std::string& what) {
-    return failure(stop_outcome(), std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
+    return failure(stop_outcome(),
+                   std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
   };
   std::optional<eaci::Cell> target = eaci::nearestFreeCell(view, *goal_cell, radius_cells, should_stop);
   if (!target) {
-    if (stop_reason.load() != static_cast<int>(StopReason::kNone)) return stopped_while("looking for a free cell near the goal");
-    return failure(PlanOutcome::kGoalBlocked, "goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
-                   eaci::formatNumber(tolerance) + " m of it");
+    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
+      return stopped_while("looking for a free cell near the goal");
+    return failure(PlanOutcome::kGoalBlocked, "goal " + where(request.goal) +
+                                                  " is in an obstacle and no free cell lies within " +
+                                                  eaci::formatNumber(tolerance) + " m of it");
   }
 
   useLandmarksFor(frame, options.landmarks);
@@ -315,8 +321,9 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
       return stopped_while("looking for a cell near the goal that the start can reach");
     if (!reachable)
-      return failure(goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked, "goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
-                     eaci::formatNumber(tolerance) + " m of it");
+      return failure(goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked,
+                     "goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
+                         eaci::formatNumber(tolerance) + " m of it");
     if (!(*reachable == *target)) {  // else the plan failed for another reason: its error stands
       say(LogLevel::kInfo, "no route reaches " + where(frame.cellToWorld(*target)) + ": planning to " +
                                where(frame.cellToWorld(*reachable)) +
@@ -331,9 +338,11 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     if (reply.result.status != eaci::PlanStatus::kStopped)
       return failure(outcomeOf(reply.result.status, goal_free), reply.result.error);
     if (reply.stopped_by == StopReason::kTimeLimit)
-      return failure(PlanOutcome::kTimeLimit, "no route found within max_planning_time (" + eaci::formatNumber(options.max_planning_time) + " s)");
-    return failure(stoppedOutcome(reply.stopped_by), std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
-                   " iterations, before a route was found");
+      return failure(PlanOutcome::kTimeLimit, "no route found within max_planning_time (" +
+                                                  eaci::formatNumber(options.max_planning_time) + " s)");
+    return failure(stoppedOutcome(reply.stopped_by), std::string(toString(reply.stopped_by)) + " after " +
+                                                         std::to_string(reply.result.iterations_run) +
+                                                         " iterations, before a route was found");
   }
   const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target);
   if (!defect.empty())
