@@ -32,21 +32,21 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "size >= 200, requests >= 1, limit > 0\n");
     return 2;
   }
-  eaci_ros::CostmapSnapshot costmap;
+  eaci_service::CostmapSnapshot costmap;
   costmap.frame.width = costmap.frame.height = size;
   costmap.frame.resolution = 0.05;
   costmap.frame_id = "map";
   costmap.order = eaci::RowOrder::kTopFirst;
-  costmap.cells.assign(static_cast<std::size_t>(size) * size, eaci_ros::kCostmapFree);
+  costmap.cells.assign(static_cast<std::size_t>(size) * size, eaci_service::kCostmapFree);
   for (int wall = 100; wall < size; wall += 100)
     for (int i = 0; i < size; ++i)
       if (i % 100 != 50) {
-        costmap.cells[static_cast<std::size_t>(wall) * size + i] = eaci_ros::kCostmapLethal;
-        costmap.cells[static_cast<std::size_t>(i) * size + wall] = eaci_ros::kCostmapLethal;
+        costmap.cells[static_cast<std::size_t>(wall) * size + i] = eaci_service::kCostmapLethal;
+        costmap.cells[static_cast<std::size_t>(i) * size + wall] = eaci_service::kCostmapLethal;
       }
-  eaci_ros::PlanningService service(eaci_ros::ServiceSettings{}, eaci_ros::Logger{});
-  eaci::Parameters params = eaci_ros::rosDefaultParameters();
-  eaci_ros::RosPlannerOptions options;
+  eaci_service::PlanningService service(eaci_service::ServiceSettings{}, eaci_service::Logger{});
+  eaci::Parameters params = eaci_service::rosDefaultParameters();
+  eaci_service::RosPlannerOptions options;
   options.max_planning_time = limit;
   options.landmarks = landmarks;
   service.configure(params, options, "");
@@ -54,15 +54,15 @@ int main(int argc, char** argv) {
   int planned = 0, stopped = 0;
   for (int k = 0; k < requests; ++k) {
     const int offset = 2 + (k * 7) % 40;
-    eaci_ros::PlanRequest request;
+    eaci_service::PlanRequest request;
     request.start = costmap.frame.cellToWorld({offset, offset});
     request.goal = costmap.frame.cellToWorld({size - 1 - offset, size - 1 - (k * 3) % 40});
-    eaci_ros::CostmapSnapshot copy = costmap;  // the plugin's copy, made before the clock starts
+    eaci_service::CostmapSnapshot copy = costmap;  // the plugin's copy, made before the clock starts
     const auto begin = std::chrono::steady_clock::now();
-    const eaci_ros::PlanReply reply = service.plan(std::move(copy), request);
+    const eaci_service::PlanReply reply = service.plan(std::move(copy), request);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
-    planned += reply.ok;
-    stopped += reply.stopped_by == eaci_ros::StopReason::kTimeLimit ||
+    planned += reply.ok();
+    stopped += reply.stopped_by == eaci_service::StopReason::kTimeLimit ||
                reply.error.find("max_planning_time") != std::string::npos;
   }
   std::vector<double> sorted = seconds;

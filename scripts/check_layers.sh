@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The core's folders include only their own layer and the layers below it:
 #   grid <- search <- aco <- planner (include/eaci/planner.hpp and include/eaci/planner/),
-#   parallel/ and random.hpp: utilities any folder may use (and that use nothing of the core),
+#   parallel/, random.hpp and number_text.hpp: utilities any folder may use (and that use nothing of the core),
 #   io/, robot/, path/, metrics/: apart; each may use grid/ and the utilities, never
 #   search/, aco/ or planner (nor each other).
 # Prints every include that breaks this (file:line: include) and exits 1; exits 0 when none does.
@@ -15,7 +15,7 @@ core="$root/include/eaci"
 # The layer of a header, by its path under include/eaci.
 layer_of() {
   case $1 in
-    parallel/* | random.hpp) echo util ;;
+    parallel/* | random.hpp | number_text.hpp) echo util ;;
     grid/*) echo grid ;;
     search/*) echo search ;;
     aco/*) echo aco ;;

@@ -180,6 +180,7 @@ TEST_F(CliTest, NoPathExitsThree) {
                                " --set allow_corner_cutting=false --set max_iterations=5",
                            &r);
     EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_EQ(j.value("outcome", std::string()), "no_path");
     EXPECT_EQ(r.err.rfind(kPrefix, 0), 0u) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
     EXPECT_EQ(j.value("success", true), false);
@@ -407,9 +408,39 @@ TEST_F(CliTest, JsonIsWrittenOnBadInput) {
   const json j = runJson("--map " + quote(map) + " --start 0,6 --goal 19,19 --algorithm aco", &r);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(j.value("success", true), false);
-  EXPECT_NE(j.value("error", std::string()).find("obstacle"), std::string::npos);
+  EXPECT_EQ(j.value("outcome", std::string()), "start_blocked");
+  EXPECT_EQ(j.value("status", std::string()), "start_blocked");
+  EXPECT_FALSE(j.value("error", std::string()).empty());
   EXPECT_EQ(j["algorithm"], "aco");
   EXPECT_TRUE(j["length"].is_null());
+}
+
+// The JSON's "outcome" names why a run ended, in a stable word, whatever stage refused it;
+// the exit status is 2 for every refusal of the input.
+TEST_F(CliTest, TheOutcomeWordNamesEveryEnding) {
+  const std::string map = paperMap("paper-20x20.txt");
+  ASSERT_NO_FATAL_FAILURE(requireMap(map));
+  const std::string m = "--map " + quote(map);
+  struct Case {
+    std::string args;
+    const char* outcome;
+    int exit_code;
+  };
+  for (const Case& c : {Case{m + " --start 0,0 --goal 19,19", "ok", 0},
+                        Case{m + " --start 20,0 --goal 19,19", "start_off_map", 2},
+                        Case{m + " --start-xy 25,1 --goal 19,19", "start_off_map", 2},
+                        Case{m + " --start 0,0 --goal-cell 401", "goal_off_map", 2},
+                        Case{m + " --start 0,0 --goal 0,6", "goal_blocked", 2},
+                        Case{m + " --start 0,0 --goal 0,6 --tolerance 0", "goal_blocked", 2},
+                        Case{m + " --start 0,0 --goal 19,19 --set ants=0", "invalid_parameters", 2},
+                        Case{"--map " + quote(tmp("missing.txt").string()) + " --start 0,0 --goal 1,1", "invalid_map", 2},
+                        Case{m + " --start 0,0", "bad_input", 2}}) {
+    SCOPED_TRACE(c.args);
+    CliRun r;
+    const json j = runJson(c.args, &r);
+    EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+    EXPECT_EQ(j.value("outcome", std::string()), c.outcome);
+  }
 }
 
 TEST_F(CliTest, HelpExitsZero) {

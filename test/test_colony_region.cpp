@@ -176,6 +176,5 @@ TEST(ColonyRegion, EaciInANarrowRegionStillReachesTheAStarCost) {
 TEST(ColonyRegion, GeodesicEaciReportsAnUnreachableGoalWithoutAFlood) {
   const CostGrid grid = CostGrid::fromRows({{0, 1, 0}, {0, 1, 0}}, false);
   const eaci::PlanResult r = eaci::plan(grid, Cell{0, 0}, Cell{1, 2}, eaci::Algorithm::kEaci, eaci::Parameters{});
-  EXPECT_EQ(r.status, eaci::PlanStatus::kNoPath);
-  EXPECT_NE(r.error.find("cannot be reached"), std::string::npos) << r.error;
+  EXPECT_EQ(r.status, eaci::PlanStatus::kNoPath) << r.error;
 }

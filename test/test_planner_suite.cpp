@@ -88,8 +88,7 @@ TEST_P(PlannerSuite, StartEqualsGoalIsATrivialRoute) {
 
 TEST_P(PlannerSuite, GoalInASealedPocketHasNoPath) {
   const auto r = eaci::plan(room(false), Cell{0, 0}, Cell{7, 7}, algorithm(), parameters());
-  EXPECT_EQ(r.status, PlanStatus::kNoPath);
-  EXPECT_NE(r.error.find("cannot be reached"), std::string::npos) << r.error;
+  EXPECT_EQ(r.status, PlanStatus::kNoPath) << r.error;
 }
 
 TEST_P(PlannerSuite, DiagonalGapIsAPassageOnlyWithCornerCutting) {
@@ -109,37 +108,36 @@ TEST_P(PlannerSuite, EveryBadInputGetsAClearError) {
   const auto params = parameters();
   struct Case {
     Cell start, goal;
-    const char* mentions;
+    PlanStatus status;
   };
-  for (const Case& c : {Case{{-1, 0}, {0, 7}, "start (row -1, col 0) is off the map"},
-                        Case{{0, 0}, {8, 0}, "goal (row 8, col 0) is off the map"},
-                        Case{{0, 0}, {0, 99}, "off the map"},
-                        Case{{2, 2}, {0, 7}, "start (row 2, col 2) is in an obstacle"},
-                        Case{{0, 0}, {5, 7}, "goal (row 5, col 7) is in an obstacle"}}) {
+  for (const Case& c : {Case{{-1, 0}, {0, 7}, PlanStatus::kStartOffMap},
+                        Case{{0, 0}, {8, 0}, PlanStatus::kGoalOffMap},
+                        Case{{0, 0}, {0, 99}, PlanStatus::kGoalOffMap},
+                        Case{{2, 2}, {0, 7}, PlanStatus::kStartBlocked},
+                        Case{{0, 0}, {5, 7}, PlanStatus::kGoalBlocked}}) {
     const auto r = eaci::plan(grid, c.start, c.goal, algorithm(), params);
-    EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
-    EXPECT_NE(r.error.find(c.mentions), std::string::npos) << r.error;
+    EXPECT_EQ(r.status, c.status) << r.error;
+    EXPECT_FALSE(r.error.empty());
     EXPECT_TRUE(r.path.empty());
   }
   const auto empty = eaci::plan(CostGrid(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
-  EXPECT_EQ(empty.status, PlanStatus::kInvalidInput);
-  EXPECT_NE(empty.error.find("no cells"), std::string::npos);
+  EXPECT_EQ(empty.status, PlanStatus::kInvalidMap) << empty.error;
   const auto empty_view = eaci::plan(eaci::GridView(), Cell{0, 0}, Cell{0, 0}, algorithm(), params);
-  EXPECT_EQ(empty_view.status, PlanStatus::kInvalidInput);
+  EXPECT_EQ(empty_view.status, PlanStatus::kInvalidMap);
   eaci::Parameters bad = params;
   bad.ants = 0;
   const auto invalid = eaci::plan(grid, Cell{0, 0}, Cell{0, 7}, algorithm(), bad);
-  EXPECT_EQ(invalid.status, PlanStatus::kInvalidInput);
-  EXPECT_NE(invalid.error.find("ants"), std::string::npos);
+  EXPECT_EQ(invalid.status, PlanStatus::kInvalidParameters);
+  EXPECT_NE(invalid.error.find("ants"), std::string::npos);  // the sentence names the parameter
 }
 
 TEST_P(PlannerSuite, OneByOneMaps) {
   const CostGrid free_cell = CostGrid::fromRows({{0}}, false);
   EXPECT_TRUE(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).success());
   EXPECT_EQ(eaci::plan(free_cell, Cell{0, 0}, Cell{0, 1}, algorithm(), parameters()).status,
-            PlanStatus::kInvalidInput);
+            PlanStatus::kGoalOffMap);
   const CostGrid wall = CostGrid::fromRows({{1}}, false);
-  EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).status, PlanStatus::kInvalidInput);
+  EXPECT_EQ(eaci::plan(wall, Cell{0, 0}, Cell{0, 0}, algorithm(), parameters()).status, PlanStatus::kStartBlocked);
 }
 
 TEST_P(PlannerSuite, ReadsCostmapStyleBuffersBottomRowFirst) {
@@ -291,8 +289,8 @@ TEST(PlannerLimits, RefusesAMapWhosePheromoneWouldExceedTheCap) {
   for (const auto& [algorithm, params] : {std::pair<Algorithm, eaci::Parameters>{Algorithm::kAco, quickParameters()},
                                           {Algorithm::kEaci, paper}, {Algorithm::kEaci, whole_map}}) {
     const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 1}, algorithm, params);
-    EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
-    EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;
+    EXPECT_EQ(r.status, PlanStatus::kInvalidMap) << r.error;
+    EXPECT_NE(r.error.find("MiB"), std::string::npos) << r.error;  // the sentence names the cap
   }
 }
 
@@ -335,13 +333,12 @@ TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
   eaci::Parameters paper;
   paper.island_strategy = eaci::IslandStrategy::kPaper;
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{19, 19}, Algorithm::kEaci, paper, options);
-  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_EQ(r.status, PlanStatus::kStopped) << r.error;
   EXPECT_FALSE(r.route_from_search);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.iterations_run, 0);
   EXPECT_EQ(asked, 1);  // right after the islands
   EXPECT_TRUE(r.pheromone.empty());
-  EXPECT_NE(r.error.find("stopped"), std::string::npos) << r.error;
 }
 
 TEST(PlannerLimits, EarlyStopAfterIterationsWithoutImprovement) {
@@ -429,8 +426,7 @@ TEST(PlannerLimits, StopGapAcceptsARouteWithinTheGapOnACostMap) {
 TEST_P(PlannerSuite, AllObstacleMapIsAClearError) {
   const CostGrid walls = CostGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(5, 1)), false);
   const auto r = eaci::plan(walls, Cell{0, 0}, Cell{4, 4}, algorithm(), parameters());
-  EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
-  EXPECT_NE(r.error.find("in an obstacle"), std::string::npos) << r.error;
+  EXPECT_EQ(r.status, PlanStatus::kStartBlocked) << r.error;
 }
 
 TEST_P(PlannerSuite, MoreIslandsThanTheRouteHasCells) {

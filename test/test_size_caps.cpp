@@ -47,7 +47,7 @@ TEST(SizeCaps, PlanRefusesAViewLargerThanTheCapWithoutReadingIt) {
   const eaci::GridView view(&one_cell, 50000, 30000);
   for (Algorithm algorithm : {Algorithm::kEaci, Algorithm::kAco, Algorithm::kAStar}) {
     const auto r = eaci::plan(view, Cell{0, 0}, Cell{0, 1}, algorithm, eaci::Parameters{});
-    EXPECT_EQ(r.status, PlanStatus::kInvalidInput);
+    EXPECT_EQ(r.status, PlanStatus::kInvalidMap);
     EXPECT_NE(r.error.find("50000 x 30000"), std::string::npos) << r.error;
     EXPECT_NE(r.error.find("1073741824"), std::string::npos) << r.error;
   }

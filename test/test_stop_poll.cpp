@@ -91,10 +91,9 @@ TEST(PlannerLimits, AStarStopsInsideTheSearchAndSaysSo) {
   eaci::PlanOptions options;
   options.should_stop = [&](int) { return ++calls >= 2; };
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 299}, Algorithm::kAStar, quickParameters(), options);
-  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_EQ(r.status, PlanStatus::kStopped) << r.error;
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(calls, 2);
-  EXPECT_NE(r.error.find("stopped"), std::string::npos) << r.error;
   // Without the stop the same plan gets round the wall.
   const auto full = eaci::plan(grid, Cell{0, 0}, Cell{0, 299}, Algorithm::kAStar, quickParameters());
   ASSERT_TRUE(full.success());
@@ -113,11 +112,10 @@ TEST(PlannerLimits, FloodBeforeTheColonyStopsInsideAndSaysSo) {
     return true;
   };
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{199, 199}, Algorithm::kAco, quickParameters(), options);
-  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_EQ(r.status, PlanStatus::kStopped) << r.error;
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(r.iterations_run, 0);
-  EXPECT_NE(r.error.find("stopped"), std::string::npos) << r.error;
 }
 
 TEST(PlannerThreads, SearchThatMeetsInTheMiddleStopsOnBothSidesAndGivesNoRoute) {
@@ -135,11 +133,10 @@ TEST(PlannerThreads, SearchThatMeetsInTheMiddleStopsOnBothSidesAndGivesNoRoute) 
   eaci::Parameters p = quickParameters();
   p.threads = 2;
   const auto r = eaci::plan(grid, Cell{0, 0}, Cell{0, 399}, Algorithm::kEaci, p, options);
-  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_EQ(r.status, PlanStatus::kStopped) << r.error;
   EXPECT_TRUE(r.interrupted);
   EXPECT_FALSE(r.route_from_search);  // the search had not finished: no route to fall back on
   EXPECT_EQ(r.iterations_run, 0);
-  EXPECT_NE(r.error.find("stopped"), std::string::npos) << r.error;
   // Each side asks once, at its 4096th cell, and both end there (the map has 160000 cells).
   EXPECT_GE(calls.load(), 1);
   EXPECT_LE(calls.load(), 2);

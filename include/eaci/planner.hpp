@@ -40,13 +40,38 @@ inline bool parseAlgorithm(const std::string& text, Algorithm& out) {
   return true;
 }
 
+// Why a plan ended as it did, typed where it arises: callers decide from this, never from
+// PlanResult::error (a sentence for people).
 enum class PlanStatus {
   kSuccess,
-  kNoPath,        // the goal cannot be reached, or no ant reached it in time
-  kInvalidInput,  // bad parameters, empty map, start/goal off the map or in an obstacle, map too large
+  kNoPath,             // start and goal are usable but no route joins them (or no ant reached the goal)
+  kStopped,            // should_stop said stop before any route was found (PlanResult::interrupted)
+  kStartOffMap,        // the start cell lies off the map
+  kStartBlocked,       // the start cell is an obstacle
+  kGoalOffMap,         // the goal cell lies off the map
+  kGoalBlocked,        // the goal cell is an obstacle
+  kInvalidParameters,  // the parameters are refused (validationError), or too large a region for their memory cap
+  kInvalidMap,         // the map has no cells, or is larger than a cap
 };
 
-// The size caps a plan checks (each refusal is kInvalidInput with the size and the cap):
+// A stable snake_case word ("success", "no_path", ...): the CLI's JSON carries it.
+inline const char* toString(PlanStatus status) {
+  switch (status) {
+    case PlanStatus::kSuccess: return "success";
+    case PlanStatus::kNoPath: return "no_path";
+    case PlanStatus::kStopped: return "stopped";
+    case PlanStatus::kStartOffMap: return "start_off_map";
+    case PlanStatus::kStartBlocked: return "start_blocked";
+    case PlanStatus::kGoalOffMap: return "goal_off_map";
+    case PlanStatus::kGoalBlocked: return "goal_blocked";
+    case PlanStatus::kInvalidParameters: return "invalid_parameters";
+    case PlanStatus::kInvalidMap: return "invalid_map";
+  }
+  return "?";
+}
+
+// The size caps a plan checks (each refusal is kInvalidMap, or kInvalidParameters for a
+// colony's region, with the size and the cap):
 // kMaxGridCells (grid/cost_grid.hpp) on the map, kMaxPheromoneBytes (aco/pheromone_field.hpp)
 // on a colony's cells, on the whole map or on a geodesic colony's region around the route.
 
@@ -82,7 +107,7 @@ struct PlanOptions {
 };
 
 struct PlanResult {
-  PlanStatus status = PlanStatus::kInvalidInput;
+  PlanStatus status = PlanStatus::kInvalidParameters;
   std::string error;               // one line, empty on success
   Algorithm algorithm = Algorithm::kEaci;
   CellPath path;                   // start first, goal last: the 8-connected route the search found
@@ -130,14 +155,20 @@ inline PlanResult failure(Algorithm algorithm, PlanStatus status, const std::str
   return r;
 }
 
-// "" when start and goal are usable on this grid, else the reason.
-inline std::string endpointError(const CostGrid& grid, Cell c, const char* name) {
+// kSuccess when `c` is a usable start (is_start) or goal on this grid, else the status and `error`.
+inline PlanStatus endpointStatus(const CostGrid& grid, Cell c, bool is_start, std::string& error) {
+  const char* name = is_start ? "start" : "goal";
   std::ostringstream e;
-  if (!grid.contains(c))
+  PlanStatus status = PlanStatus::kSuccess;
+  if (!grid.contains(c)) {
     e << name << " " << describe(c) << " is off the map (" << grid.height() << " rows x " << grid.width() << " columns)";
-  else if (grid.isBlocked(c))
+    status = is_start ? PlanStatus::kStartOffMap : PlanStatus::kGoalOffMap;
+  } else if (grid.isBlocked(c)) {
     e << name << " " << describe(c) << " is in an obstacle";
-  return e.str();
+    status = is_start ? PlanStatus::kStartBlocked : PlanStatus::kGoalBlocked;
+  }
+  error = e.str();
+  return status;
 }
 
 inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, const PlanOptions& options,
@@ -168,17 +199,19 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
                        const PlanOptions& options = {}) {
   using detail::failure;
   const std::string parameter_error = validationError(params);
-  if (!parameter_error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, "invalid parameter: " + parameter_error);
+  if (!parameter_error.empty())
+    return failure(algorithm, PlanStatus::kInvalidParameters, "invalid parameter: " + parameter_error);
   const CostRule rule = costRule(params);
   if (grid.costRule().neutral_cost != rule.neutral_cost || grid.costRule().cost_factor != rule.cost_factor) {
     CostGrid ruled = grid;
     ruled.setCostRule(rule);
     return plan(ruled, start, goal, algorithm, params, options);
   }
-  if (grid.cellCount() == 0) return failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
-  for (const auto& [cell, name] : {std::pair<Cell, const char*>{start, "start"}, {goal, "goal"}}) {
-    const std::string error = detail::endpointError(grid, cell, name);
-    if (!error.empty()) return failure(algorithm, PlanStatus::kInvalidInput, error);
+  if (grid.cellCount() == 0) return failure(algorithm, PlanStatus::kInvalidMap, "the map has no cells");
+  for (const auto& [cell, is_start] : {std::pair<Cell, bool>{start, true}, {goal, false}}) {
+    std::string error;
+    const PlanStatus status = detail::endpointStatus(grid, cell, is_start, error);
+    if (status != PlanStatus::kSuccess) return failure(algorithm, status, error);
   }
   // Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) keep
   // pheromone for every cell; geodesic EACI only for its region around the route.
@@ -190,7 +223,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     e << "map of " << grid.width() << " x " << grid.height() << " cells needs "
       << grid.cellCount() * kPheromoneBytesPerCell / (1 << 20) << " MiB of pheromone, over the cap of "
       << kMaxPheromoneBytes / (1 << 20) << " MiB";
-    return failure(algorithm, PlanStatus::kInvalidInput, e.str());
+    return failure(algorithm, PlanStatus::kInvalidMap, e.str());
   }
 
   PlanResult r;
@@ -223,7 +256,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     if (!geodesic) {
       const bool reachable = reachableFrom(grid, start, &poll)[grid.index(goal)] != 0;
       if (poll.stopped()) {
-        PlanResult stopped = failure(algorithm, PlanStatus::kNoPath,
+        PlanResult stopped = failure(algorithm, PlanStatus::kStopped,
                                      "stopped (should_stop) while finding the cells reachable from the start");
         stopped.interrupted = true;
         return stopped;
@@ -244,7 +277,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
       e << "the colony's region within region_margin " << params.region_margin << " of the route holds over "
         << kMaxPheromoneCells << " cells, whose pheromone would exceed the cap of " << (kMaxPheromoneBytes >> 20)
         << " MiB (lower region_margin)";
-      return failure(algorithm, PlanStatus::kInvalidInput, e.str());
+      return failure(algorithm, PlanStatus::kInvalidParameters, e.str());
     }
     detail::fillFromColony(grid, colony, options, r);
     if (colony_workspace) {  // their memory serves the next plan
@@ -257,7 +290,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     }
   }
   if (r.path.empty()) {
-    r.status = PlanStatus::kNoPath;
+    r.status = r.interrupted ? PlanStatus::kStopped : PlanStatus::kNoPath;
     if (algorithm == Algorithm::kAStar && r.interrupted)
       r.error = "stopped (should_stop) during the A* search, before it reached the goal";
     else if (algorithm == Algorithm::kAStar)
@@ -288,9 +321,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
 // makers build it from lethal_cost and allow_unknown: CellInterpretation::costmap, the loaders).
 inline PlanResult plan(const GridView& view, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
                        const PlanOptions& options = {}) {
-  if (view.empty()) return detail::failure(algorithm, PlanStatus::kInvalidInput, "the map has no cells");
+  if (view.empty()) return detail::failure(algorithm, PlanStatus::kInvalidMap, "the map has no cells");
   if (static_cast<std::size_t>(view.width()) * static_cast<std::size_t>(view.height()) > kMaxGridCells)
-    return detail::failure(algorithm, PlanStatus::kInvalidInput, gridTooLargeError(view.width(), view.height()));
+    return detail::failure(algorithm, PlanStatus::kInvalidMap, gridTooLargeError(view.width(), view.height()));
   return plan(CostGrid::fromView(view, params.allow_corner_cutting, costRule(params)), start, goal, algorithm, params,
               options);
 }

@@ -99,12 +99,12 @@ inline RouteCheck checkRoute(const eaci::CostGrid& planning, const eaci::CostGri
   const eaci::CellPath crossed = drivenCells(corners, false);
   check.min_clearance = eaci::minClearance(obstacles, crossed);
   double sum = 0.0;
-  for (const eaci::Cell& c : crossed) sum += costs.contains(c) ? costs.at(c) : eaci::kCostmapNoInformation;
+  for (const eaci::Cell& c : crossed) sum += costs.contains(c) ? costs.at(c) : eaci::kCostmapUnknown;
   check.mean_cell_cost = sum / static_cast<double>(crossed.size());
   for (const eaci::Cell& c : drivenCells(corners, true)) {
-    const std::uint8_t v = costs.contains(c) ? costs.at(c) : eaci::kCostmapNoInformation;
-    if (v >= eaci::kCostmapLethalObstacle) ++check.lethal_cells;
-    else if (v == eaci::kCostmapInscribedObstacle) ++check.inscribed_cells;
+    const std::uint8_t v = costs.contains(c) ? costs.at(c) : eaci::kCostmapUnknown;
+    if (v >= eaci::kCostmapLethal) ++check.lethal_cells;
+    else if (v == eaci::kCostmapInscribed) ++check.inscribed_cells;
   }
   return check;
 }

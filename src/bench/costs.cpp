@@ -9,6 +9,7 @@
 
 #include "cost_checks.hpp"
 #include "eaci/io/map_io.hpp"
+#include "eaci/number_text.hpp"
 #include "eaci/search/astar.hpp"
 #include "forked_run.hpp"
 #include "progress.hpp"
@@ -65,15 +66,11 @@ void prepare(PreparedMap& m, const eaci::OccupancyMap& map, const eaci::Inflatio
 
 double blockedFraction(const CostBytes& costs) {
   const auto blocked = std::count_if(costs.bytes.begin(), costs.bytes.end(),
-                                     [](std::uint8_t v) { return v >= eaci::kCostmapInscribedObstacle; });
+                                     [](std::uint8_t v) { return v >= eaci::kCostmapInscribed; });
   return costs.bytes.empty() ? 0.0 : static_cast<double>(blocked) / static_cast<double>(costs.bytes.size());
 }
 
-std::string metres(double x, double y) {
-  char text[64];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f)", x, y);
-  return text;
-}
+std::string metres(double x, double y) { return "(" + eaci::formatNumber(x, 2) + ", " + eaci::formatNumber(y, 2) + ")"; }
 
 nlohmann::json finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
@@ -146,7 +143,7 @@ class CostsRunner {
       params.seed = seed;
       params.threads = 1;
       params.smooth_path = v.smooth;
-      const PlanRequest request{prepared.view, start, goal, v.algorithm, params,
+      const TimedPlanRequest request{prepared.view, start, goal, v.algorithm, params,
                                 v.algorithm == eaci::Algorithm::kAStar ? 0.0 : o_.budget_s * 1000.0};
       const ForkedResult child = runForked([&] { return timedPlan(request, false, true).dump(); });
       if (!child.ok) throw std::runtime_error(v.key + " on " + problem["name"].get<std::string>() + ": " + child.error);

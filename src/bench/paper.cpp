@@ -51,7 +51,6 @@ const std::vector<SweepAxis>& sweepAxes() {
 const std::vector<double> kAcoTau0 = {1, 100, 800, 8000};
 const std::vector<double> kAcoRho = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9};
 
-std::string text(double value) { return eaci::formatNumber(value, 6); }
 
 struct LoadedMap {
   eaci::paper::PaperMap spec;
@@ -81,8 +80,8 @@ class PaperRunner {
   PaperRunner(const PaperOptions& options, RecordWriter& out, const char* command)
       : options_(options), out_(out), progress_(command) {}
 
-  PlanRequest request(const LoadedMap& m, eaci::Algorithm algorithm, const eaci::Parameters& params) const {
-    return PlanRequest{m.map.view(), m.spec.start, m.spec.goal, algorithm, params, 0.0};
+  TimedPlanRequest request(const LoadedMap& m, eaci::Algorithm algorithm, const eaci::Parameters& params) const {
+    return TimedPlanRequest{m.map.view(), m.spec.start, m.spec.goal, algorithm, params, 0.0};
   }
 
   // The exact A* route (microseconds: the median time of 21).
@@ -142,9 +141,9 @@ void runSweep(const PaperOptions& options, RecordWriter& out) {
     for (const SweepAxis& axis : sweepAxes())
       for (double value : axis.values)
         for (const std::string strategy : {"paper", "geodesic"}) {
-          const Settings settings = {{"islands", "6"}, {"island_strategy", strategy}, {axis.key, text(value)}};
+          const Settings settings = {{"islands", "6"}, {"island_strategy", strategy}, {axis.key, eaci::formatNumber(value, 6)}};
           runner.runs(m, "eaci-" + strategy, eaci::Algorithm::kEaci, settings, {{"axis", axis.key}, {"value", value}},
-                      false, strategy + " | " + axis.key + " = " + text(value));
+                      false, strategy + " | " + axis.key + " = " + eaci::formatNumber(value, 6));
         }
   }
   for (const LoadedMap& m : loadMaps(options.maps_dir)) {
@@ -152,9 +151,9 @@ void runSweep(const PaperOptions& options, RecordWriter& out) {
     runner.astar(m);
     for (double tau0 : kAcoTau0)
       for (double rho : kAcoRho)
-        runner.runs(m, "aco", eaci::Algorithm::kAco, {{"aco_rho", text(rho)}, {"aco_tau0", text(tau0)}},
+        runner.runs(m, "aco", eaci::Algorithm::kAco, {{"aco_rho", eaci::formatNumber(rho, 6)}, {"aco_tau0", eaci::formatNumber(tau0, 6)}},
                     {{"axis", "aco"}, {"aco_rho", rho}, {"aco_tau0", tau0}}, false,
-                    "aco | tau0 = " + text(tau0) + ", rho = " + text(rho));
+                    "aco | tau0 = " + eaci::formatNumber(tau0, 6) + ", rho = " + eaci::formatNumber(rho, 6));
   }
   runner.finish();
 }

@@ -49,7 +49,7 @@ std::string procValue(const char* file, const std::string& key) {
 
 }  // namespace
 
-nlohmann::json timedPlan(const PlanRequest& request, bool with_curves, bool with_path) {
+nlohmann::json timedPlan(const TimedPlanRequest& request, bool with_curves, bool with_path) {
   std::vector<double> iteration_end_ms;
   iteration_end_ms.reserve(static_cast<std::size_t>(request.params.max_iterations));
   eaci::PlanOptions options;
@@ -89,7 +89,7 @@ nlohmann::json timedPlan(const PlanRequest& request, bool with_curves, bool with
   return run;
 }
 
-nlohmann::json timedPlanMedian(const PlanRequest& request, int repeats, bool with_path) {
+nlohmann::json timedPlanMedian(const TimedPlanRequest& request, int repeats, bool with_path) {
   nlohmann::json run = timedPlan(request, false, with_path);
   std::vector<double> times = {run["time_ms"].get<double>()}, cpu_times = {run["cpu_ms"].get<double>()};
   for (int k = 1; k < repeats; ++k) {
@@ -106,7 +106,7 @@ eaci::CellPath routeOf(const nlohmann::json& run, bool smoothed) {
   return (smoothed && run.contains("smoothed_path") ? run["smoothed_path"] : run["path"]).get<eaci::CellPath>();
 }
 
-nlohmann::json pheromoneSnapshots(const PlanRequest& request, const std::vector<int>& iterations) {
+nlohmann::json pheromoneSnapshots(const TimedPlanRequest& request, const std::vector<int>& iterations) {
   nlohmann::json snapshots = nlohmann::json::array();
   eaci::PlanOptions options;
   options.observer = [&](int iteration, const eaci::PheromoneField& field, const eaci::ColonyRegion& region) {

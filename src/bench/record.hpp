@@ -22,7 +22,7 @@
 
 namespace eaci_bench {
 
-struct PlanRequest {
+struct TimedPlanRequest {
   eaci::GridView view;
   eaci::Cell start;
   eaci::Cell goal;
@@ -35,11 +35,11 @@ struct PlanRequest {
 // One eaci::plan(), timed (an observer notes the end of each iteration; it only reads the clock),
 // as the record's "run". `with_curves`: the per-iteration curves; `with_path`: the route's cells,
 // the smoothed route's when it differs, the islands. A non-finite number is written as null.
-nlohmann::json timedPlan(const PlanRequest& request, bool with_curves, bool with_path);
+nlohmann::json timedPlan(const TimedPlanRequest& request, bool with_curves, bool with_path);
 // Microsecond plans: the first run with the median wall and CPU time of `repeats` runs.
-nlohmann::json timedPlanMedian(const PlanRequest& request, int repeats, bool with_path);
+nlohmann::json timedPlanMedian(const TimedPlanRequest& request, int repeats, bool with_path);
 // One untimed run: the strongest pheromone leaving each cell at the listed iterations (0 = initial).
-nlohmann::json pheromoneSnapshots(const PlanRequest& request, const std::vector<int>& iterations);
+nlohmann::json pheromoneSnapshots(const TimedPlanRequest& request, const std::vector<int>& iterations);
 // The route a run's JSON holds: the smoothed one when `smoothed` and it was written, else the grid route.
 eaci::CellPath routeOf(const nlohmann::json& run, bool smoothed);
 

@@ -37,7 +37,7 @@ nlohmann::json problemOf(const GeneratedMap& g, bool with_grid) {
 }
 
 // One plan in a child process: its record and the child's peak memory.
-Record forkedPlan(const GeneratedMap& g, const std::string& variant, const PlanRequest& request, bool keep_path) {
+Record forkedPlan(const GeneratedMap& g, const std::string& variant, const TimedPlanRequest& request, bool keep_path) {
   const ForkedResult child = runForked([&] { return timedPlan(request, false, keep_path).dump(); });
   if (!child.ok) throw std::runtime_error(variant + " on " + toString(g.kind) + " " + std::to_string(g.size) + ": " + child.error);
   Record r;
@@ -73,7 +73,7 @@ void runScale(const GeneratedOptions& o, RecordWriter& out) {
           params.threads = v.threads;
           params.early_stop_iterations = v.early_stop ? o.early_stop_iterations : 0;
           const double budget_ms = v.algorithm == eaci::Algorithm::kAStar ? 0.0 : o.budget_s * 1000.0;
-          Record r = forkedPlan(g, v.key, PlanRequest{g.map.view(), g.start, g.goal, v.algorithm, params, budget_ms}, example);
+          Record r = forkedPlan(g, v.key, TimedPlanRequest{g.map.view(), g.start, g.goal, v.algorithm, params, budget_ms}, example);
           // A run stopped by the budget: dropped for the rest of this case and larger maps of the
           // kind. A slow run: the rest of this case's seeds are dropped.
           if (r.run["interrupted"].get<bool>()) {
@@ -108,7 +108,7 @@ void runDeadline(const GeneratedOptions& o, RecordWriter& out) {
           params.threads = o.threads;
           params.max_iterations = 1000000;
           params.early_stop_iterations = 0;
-          Record r = forkedPlan(g, "eaci", PlanRequest{g.map.view(), g.start, g.goal, eaci::Algorithm::kEaci, params,
+          Record r = forkedPlan(g, "eaci", TimedPlanRequest{g.map.view(), g.start, g.goal, eaci::Algorithm::kEaci, params,
                                                        limit_s * 1000.0}, false);
           r.problem["limit_s"] = limit_s;
           out.append(r);

@@ -60,7 +60,7 @@ int runScen(const ScenOptions& o, RecordWriter& out) {
                  {"optimal_length", p.optimal_length}};
     r.params = o.parameters;
     r.variant = "astar";
-    r.run = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, r.params, 0.0, &astar_workspace},
+    r.run = timedPlan(TimedPlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kAStar, r.params, 0.0, &astar_workspace},
                       false, false);
     const bool success = r.run["success"].get<bool>();
     const double length = success ? r.run["length"].get<double>() : INFINITY;
@@ -74,7 +74,7 @@ int runScen(const ScenOptions& o, RecordWriter& out) {
     r.variant = "eaci";
     for (int seed = 1; seed <= o.seeds; ++seed) {
       r.params.seed = static_cast<std::uint64_t>(seed);
-      r.run = timedPlan(PlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kEaci, r.params, o.budget_s * 1000.0,
+      r.run = timedPlan(TimedPlanRequest{m.view(), p.start, p.goal, eaci::Algorithm::kEaci, r.params, o.budget_s * 1000.0,
                                     &eaci_workspace}, false, false);
       out.append(r);
     }

@@ -19,17 +19,6 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
-std::string formatNumber(double value, int max_decimals) {
-  std::ostringstream s;
-  s << std::setprecision(max_decimals) << std::fixed << value;
-  std::string text = s.str();
-  if (text.find('.') != std::string::npos) {
-    while (text.back() == '0') text.pop_back();
-    if (text.back() == '.') text.pop_back();
-  }
-  return text;
-}
-
 std::string exactNumber(double value) {
   char text[64];
   const auto result = std::to_chars(text, text + sizeof text, value);

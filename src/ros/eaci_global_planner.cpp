@@ -49,7 +49,8 @@ bool EaciGlobalPlanner::makePlan(const geometry_msgs::PoseStamped& start, const 
                                  std::vector<geometry_msgs::PoseStamped>& plan) {
   plan.clear();
   if (!planner_) {
-    ROS_ERROR("EaciGlobalPlanner: makePlan called before a successful initialize()");
+    ROS_ERROR("EaciGlobalPlanner: no plan (%s): makePlan called before a successful initialize()",
+              toName(PlanOutcome::kNotInitialised));
     return false;
   }
   return planner_->makePlan(start, goal, -1.0, plan);

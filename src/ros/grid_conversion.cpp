@@ -55,7 +55,7 @@ nav_msgs::OccupancyGrid toOccupancyGrid(const eaci::OccupancyMap& map, const std
 eaci::GridView viewOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold, bool allow_unknown) {
   eaci::CellInterpretation interpretation;
   interpretation.lethal_cost = static_cast<std::uint8_t>(std::clamp(occupied_threshold, 1, 100));
-  interpretation.unknown_value = 255;  // int8 -1
+  interpretation.unknown_value = eaci::kCostmapUnknown;  // int8 -1 read as a byte
   interpretation.unknown = allow_unknown ? eaci::UnknownPolicy::kExpensive : eaci::UnknownPolicy::kObstacle;
   const std::size_t cells = static_cast<std::size_t>(grid.info.width) * grid.info.height;
   if (grid.data.size() != cells || cells == 0) return eaci::GridView();
@@ -81,16 +81,6 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
   const eaci::GridView view = viewOf(grid, occupied_threshold, /*allow_unknown=*/false);
   if (view.empty() || !(grid.info.resolution > 0)) return {};
   return eaci::inflatedCosts(view, grid.info.resolution, inflation);
-}
-
-eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int height, int lethal_cost,
-                        bool allow_unknown) {
-  if (costs.empty() || costs.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    return eaci::GridView();
-  eaci::CellInterpretation interpretation =
-      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(std::clamp(lethal_cost, 1, 255)), allow_unknown);
-  interpretation.unknown_value = eaci::kCostmapNoInformation;
-  return eaci::GridView(costs.data(), width, height, eaci::RowOrder::kTopFirst, interpretation);
 }
 
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,

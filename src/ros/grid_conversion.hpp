@@ -45,14 +45,9 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
 
 // The grid as costmap_2d's inflation layer would cost it (eaci/grid/inflation.hpp): occupied
 // cells (at or above `occupied_threshold`) 254, unknown 255, cells within the inscribed radius
-// 253, then the exponential decay out to the inflation radius. Row 0 = top, as costView() reads it.
+// 253, then the exponential decay out to the inflation radius. Row 0 = top.
 std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold,
                                           const eaci::InflationParameters& inflation);
-
-// inflatedCostsOf()'s costs (of a grid `width` x `height`) as the planners read a costmap: from
-// `lethal_cost` up obstacles, 255 unknown following `allow_unknown`.
-eaci::GridView costView(const std::vector<std::uint8_t>& costs, int width, int height, int lethal_cost,
-                        bool allow_unknown);
 
 // The route as poses in the map frame: the start pose's position first, cell centres (with
 // extra poses along long straight segments of a smoothed route), the goal pose (position and

@@ -3,6 +3,7 @@
 #include <XmlRpcValue.h>
 #include <dynamic_reconfigure/Config.h>
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -37,13 +38,14 @@ std::map<std::string, std::string> configTexts(const PlannerConfig& config) {
 }
 
 std::string applyConfig(const PlannerConfig& config, const PlannerConfig* previous, eaci::Parameters& params,
-                        RosPlannerOptions& options, std::string* changes) {
+                        RosPlannerOptions& options, std::string* changes, std::vector<std::string>* changed) {
   const auto before = previous ? configTexts(*previous) : std::map<std::string, std::string>{};
   try {
     for (const auto& [name, text] : configTexts(config)) {
       if (previous && before.at(name) == text) continue;
       setRosParameter(params, options, name, text);
       if (changes) *changes += (changes->empty() ? "" : ", ") + name + " " + text;
+      if (changed) changed->push_back(name);
     }
   } catch (const eaci::ParameterError& e) {
     return e.what();
@@ -117,7 +119,8 @@ void PlannerConfiguration::onReconfigure(PlannerConfig& config) {
       eaci::Parameters params = params_;
       RosPlannerOptions options = options_;
       std::string changes;  // only what this reconfigure changed: a seed above INT_MAX stays as read
-      const std::string error = applyConfig(config, &in_force_, params, options, &changes);
+      std::vector<std::string> changed;
+      const std::string error = applyConfig(config, &in_force_, params, options, &changes, &changed);
       if (!error.empty()) {
         std::string stays;
         try {
@@ -128,7 +131,7 @@ void PlannerConfiguration::onReconfigure(PlannerConfig& config) {
         ROS_ERROR("%s: reconfigure rejected: %s/%s; the values in force stay%s", who_.c_str(), namespace_.c_str(),
                   error.c_str(), stays.c_str());
       } else {
-        if ((", " + changes).find(", " + start_parameter_ + " ") != std::string::npos) start_error_.clear();
+        if (std::find(changed.begin(), changed.end(), start_parameter_) != changed.end()) start_error_.clear();
         {
           std::lock_guard<std::mutex> lock(mutex_);
           params_ = params;

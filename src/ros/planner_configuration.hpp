@@ -22,10 +22,14 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "planner_options.hpp"
 
 namespace eaci_ros {
+
+// The ROS-free planning service (src/service) is what these adapters wrap.
+using namespace eaci_service;
 
 using PlannerConfig = eaci_planner::EaciPlannerConfig;
 
@@ -35,9 +39,10 @@ std::map<std::string, std::string> configTexts(const PlannerConfig& config);
 // Sets the values of `config` that differ from `previous` (every value when null) in `params`
 // and `options` and validates the result: "" or one sentence starting with the name of the
 // first bad parameter (`params` and `options` partly set then: use copies). `changes`, when
-// given, receives "name value" of each value set.
+// given, receives "name value" of each value set; `changed`, the name of each.
 std::string applyConfig(const PlannerConfig& config, const PlannerConfig* previous, eaci::Parameters& params,
-                        RosPlannerOptions& options, std::string* changes = nullptr);
+                        RosPlannerOptions& options, std::string* changes = nullptr,
+                        std::vector<std::string>* changed = nullptr);
 
 // Sets every value of `config` to the one in `params` and `options` (a seed wider than an int,
 // which the config cannot hold, leaves the config's).

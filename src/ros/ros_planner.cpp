@@ -19,6 +19,14 @@ void logLine(LogLevel level, const std::string& line) {
   }
 }
 
+// "who: no plan (no_path): goal (...) cannot be reached ...": the outcome's word, then the sentence.
+void logFailure(const std::string& who, const char* what, const PlanReply& reply) {
+  const bool fault = reply.outcome == PlanOutcome::kBadParameters || reply.outcome == PlanOutcome::kBadCostmap ||
+                     reply.outcome == PlanOutcome::kInternalError || reply.outcome == PlanOutcome::kNotInitialised;
+  logLine(fault ? LogLevel::kError : LogLevel::kWarn,
+          who + ": " + what + "no plan (" + toName(reply.outcome) + "): " + reply.error);
+}
+
 TfMapFrame rosFrame(const PlanReply& reply) {
   TfMapFrame frame;
   static_cast<eaci::MapFrame&>(frame) = reply.frame;
@@ -68,15 +76,22 @@ bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometr
                           double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
   plan.clear();
   try {
-    CostmapSnapshot costmap = setup_.costmap();
+    CostmapSnapshot costmap;
+    try {
+      costmap = setup_.costmap();
+    } catch (const std::exception& e) {
+      ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(PlanOutcome::kBadCostmap), e.what());
+      return false;
+    }
     for (const auto* pose : {&start, &goal}) {
       if (pose->header.frame_id != costmap.frame_id) {
-        ROS_ERROR("%s: the %s is in frame '%s', the costmap in '%s'", setup_.who.c_str(),
+        ROS_ERROR("%s: no plan (%s): the %s is in frame '%s', the costmap in '%s'", setup_.who.c_str(),
+                  toName(pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap),
                   pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), costmap.frame_id.c_str());
         return false;
       }
     }
-    return planOn(std::move(costmap), start, goal, tolerance, plan);
+    return planOn(std::move(costmap), start, goal, tolerance, plan, false);
   } catch (const std::exception& e) {
     failedWith(e.what(), plan);
   } catch (...) {
@@ -87,14 +102,17 @@ bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometr
 
 bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start,
                         const geometry_msgs::PoseStamped& goal, double tolerance,
-                        std::vector<geometry_msgs::PoseStamped>& plan) {
+                        std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
   PlanRequest request;
   request.start = {start.pose.position.x, start.pose.position.y};
   request.goal = {goal.pose.position.x, goal.pose.position.y};
   request.tolerance = tolerance;
   request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
   const PlanReply reply = service_->plan(std::move(costmap), request);
-  if (!reply.ok) return false;  // the service said why
+  if (!reply.ok()) {
+    logFailure(setup_.who, from_service ? "make_plan: " : "", reply);
+    return false;
+  }
   geometry_msgs::PoseStamped target = goal;
   target.pose.position.x = reply.goal.x();
   target.pose.position.y = reply.goal.y();
@@ -110,7 +128,7 @@ bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStampe
 void RosPlanner::failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
   plan.clear();
   try {
-    ROS_ERROR("%s: no plan: %s", setup_.who.c_str(), what);
+    ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(PlanOutcome::kInternalError), what);
   } catch (...) {
   }
 }
@@ -121,7 +139,7 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
     try {
       costmap = setup_.costmap();
     } catch (const std::exception& e) {
-      ROS_ERROR("%s: make_plan: %s", setup_.who.c_str(), e.what());
+      ROS_ERROR("%s: make_plan: no plan (%s): %s", setup_.who.c_str(), toName(PlanOutcome::kBadCostmap), e.what());
       return true;
     }
     const std::string frame = costmap.frame_id;
@@ -133,14 +151,15 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
       if (pose->header.frame_id.empty() || pose->header.frame_id == frame) {
         pose->header.frame_id = frame;
       } else if (!setup_.transform || !setup_.transform(geometry_msgs::PoseStamped(*pose), frame, *pose, error)) {
-        ROS_ERROR("%s: make_plan: the %s is in frame '%s', the costmap in '%s'%s%s", setup_.who.c_str(),
+        ROS_ERROR("%s: make_plan: no plan (%s): the %s is in frame '%s', the costmap in '%s'%s%s", setup_.who.c_str(),
+                  toName(pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap),
                   pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), frame.c_str(),
                   error.empty() ? "" : ": ", error.c_str());
         return true;
       }
     }
     // The request's own tolerance when > 0, else default_tolerance.
-    planOn(std::move(costmap), start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses);
+    planOn(std::move(costmap), start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses, true);
   } catch (const std::exception& e) {
     failedWith(e.what(), response.plan.poses);
   } catch (...) {

@@ -50,18 +50,19 @@ class RosPlanner {
   ~RosPlanner();
 
   // Plans from `start` to `goal` (poses in the costmap's frame). false with a log line naming
-  // the reason; `plan` empty then. tolerance < 0: default_tolerance. Never throws.
+  // the outcome (toName(PlanOutcome)) and the reason; `plan` empty then. tolerance < 0:
+  // default_tolerance. Never throws.
   bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal, double tolerance,
                 std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
 
-  PlanningService& service() { return *service_; }
   // The options in force (the node inflates its map with them).
   RosPlannerOptions options() const { return config_->options(); }
 
  private:
-  // Plans on `costmap` (poses already in its frame), publishes; false when the service said no.
+  // Plans on `costmap` (poses already in its frame), publishes; false when the service said no
+  // (logged with the outcome; `from_service`: for ~make_plan).
   bool planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-              double tolerance, std::vector<geometry_msgs::PoseStamped>& plan);
+              double tolerance, std::vector<geometry_msgs::PoseStamped>& plan, bool from_service);
   void failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);

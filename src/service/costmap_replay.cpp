@@ -10,7 +10,7 @@
 #include "eaci/io/map_server_writer.hpp"
 #include "eaci/io/text.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,4 +83,4 @@ ReplayFiles saveCostmapForReplay(const std::string& directory, const std::string
   return files;
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -14,7 +14,7 @@
 #include "eaci/planner.hpp"
 #include "costmap_snapshot.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // One plan request in the map frame and what came of it.
 struct PlanRecord {
@@ -46,4 +46,4 @@ ReplayFiles saveCostmapForReplay(const std::string& directory, const std::string
                                  eaci::Algorithm algorithm, const std::optional<PlanRecord>& request,
                                  const std::vector<std::string>& notes);
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -5,7 +5,7 @@
 #include <cstring>
 
 
-namespace eaci_ros {
+namespace eaci_service {
 
 bool isUniform(const CostmapSnapshot& costmap) {
   const std::vector<std::uint8_t>& cells = costmap.cells;
@@ -63,4 +63,4 @@ std::string EmptiedCostmapStandIn::standIn(CostmapSnapshot& costmap, Clock::time
          "and not filled it yet; planning on the last filled costmap, placed into its frame";
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

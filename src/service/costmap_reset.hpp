@@ -17,7 +17,7 @@
 
 #include "costmap_snapshot.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // True when every cell holds the same value (and there is at least one cell): what costmap_2d
 // leaves in a costmap it has emptied. Stops at the first cell that differs.
@@ -55,4 +55,4 @@ class EmptiedCostmapStandIn {
   std::optional<Clock::time_point> emptied_since_;  // the first plan that found the costmap emptied
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

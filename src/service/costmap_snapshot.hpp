@@ -9,16 +9,17 @@
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/costmap_costs.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/grid/map_frame.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
-// costmap_2d's cost values (costmap_2d/cost_values.h), for code that has no ROS headers.
-constexpr std::uint8_t kCostmapFree = 0;
-constexpr std::uint8_t kCostmapInscribed = 253;  // INSCRIBED_INFLATED_OBSTACLE
-constexpr std::uint8_t kCostmapLethal = 254;     // LETHAL_OBSTACLE
-constexpr std::uint8_t kCostmapUnknown = 255;    // NO_INFORMATION
+// costmap_2d's cost values: the core's one copy (eaci/grid/costmap_costs.hpp).
+using eaci::kCostmapFree;
+using eaci::kCostmapInscribed;
+using eaci::kCostmapLethal;
+using eaci::kCostmapUnknown;
 
 struct CostmapSnapshot {
   std::vector<std::uint8_t> cells;  // costmap_2d costs, frame.width x frame.height
@@ -35,4 +36,4 @@ struct CostmapSnapshot {
   }
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -8,7 +8,7 @@
 #include <atomic>
 #include <mutex>
 
-namespace eaci_ros {
+namespace eaci_service {
 
 class PlanCancellation {
  public:
@@ -47,4 +47,4 @@ class PlanCancellation {
   std::atomic<bool> cancel_requested_{false};
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -4,7 +4,7 @@
 // anything from the reply's sentence.
 #pragma once
 
-namespace eaci_ros {
+namespace eaci_service {
 
 enum class PlanOutcome {
   kOk,              // a route (possibly the best so far when a stop came after one was found)
@@ -22,7 +22,9 @@ enum class PlanOutcome {
   kInternalError,   // out of memory, an exception, a route that failed the last check
 };
 
-// A short lower-case name: "ok", "start off the map", ...
+// A short lower-case name for log lines: "ok", "start off the map", ...
 const char* toString(PlanOutcome outcome);
+// A stable snake_case word for machines (JSON, tests): "ok", "start_off_map", "no_path", ...
+const char* toName(PlanOutcome outcome);
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

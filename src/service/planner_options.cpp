@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 using Options = RosPlannerOptions;
@@ -126,4 +126,4 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
   return e.str();
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

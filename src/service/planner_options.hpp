@@ -10,7 +10,7 @@
 #include "eaci/path/orientation.hpp"
 #include "eaci/planner.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 struct RosPlannerOptions {
   eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | astar
@@ -70,4 +70,4 @@ std::string valueText(const eaci::ParameterValue& value);
 // "" when every value is in range, else one sentence starting with the parameter's name.
 std::string rosValidationError(const eaci::Parameters& params, const RosPlannerOptions& options);
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -15,17 +15,32 @@
 #include "route_defect.hpp"
 #include "start_cell.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 std::string where(const Eigen::Vector2d& p) {
-  char text[96];
-  std::snprintf(text, sizeof(text), "(%.3f, %.3f)", p.x(), p.y());
-  return text;
+  return "(" + eaci::formatNumber(p.x(), 3) + ", " + eaci::formatNumber(p.y(), 3) + ")";
 }
 
 std::string sizeOf(const eaci::MapFrame& frame) {
   return std::to_string(frame.width) + " x " + std::to_string(frame.height) + " cells";
+}
+
+// The outcome of a plan the core refused or found no route for (not stopped): typed where it
+// arose, never read from its sentence. `goal_free`: the goal cell itself may be crossed.
+PlanOutcome outcomeOf(eaci::PlanStatus status, bool goal_free) {
+  switch (status) {
+    case eaci::PlanStatus::kSuccess: return PlanOutcome::kOk;
+    case eaci::PlanStatus::kNoPath: return goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked;
+    case eaci::PlanStatus::kStopped: return PlanOutcome::kInternalError;  // the stop reason decides (stoppedOutcome)
+    case eaci::PlanStatus::kStartOffMap: return PlanOutcome::kStartOffMap;
+    case eaci::PlanStatus::kStartBlocked: return PlanOutcome::kStartBlocked;
+    case eaci::PlanStatus::kGoalOffMap: return PlanOutcome::kGoalOffMap;
+    case eaci::PlanStatus::kGoalBlocked: return PlanOutcome::kGoalBlocked;
+    case eaci::PlanStatus::kInvalidParameters: return PlanOutcome::kBadParameters;
+    case eaci::PlanStatus::kInvalidMap: return PlanOutcome::kBadCostmap;
+  }
+  return PlanOutcome::kInternalError;
 }
 
 // Costmaps larger than this are refused: 32-bit cell indices, and the planner's per-cell
@@ -42,6 +57,16 @@ const char* toString(StopReason reason) {
     case StopReason::kShutdown: return "shutting down";
   }
   return "?";
+}
+
+PlanOutcome stoppedOutcome(StopReason reason) {
+  switch (reason) {
+    case StopReason::kTimeLimit: return PlanOutcome::kTimeLimit;
+    case StopReason::kCancelled: return PlanOutcome::kCancelled;
+    case StopReason::kShutdown: return PlanOutcome::kShutdown;
+    case StopReason::kNone: break;
+  }
+  return PlanOutcome::kInternalError;
 }
 
 PlanningService::PlanningService(ServiceSettings settings, Logger log)
@@ -105,16 +130,16 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
   const auto fail = [&](const std::string& why) noexcept {
     try {
       reply = PlanReply();
+      reply.outcome = PlanOutcome::kInternalError;
       reply.error = why;
-      say(LogLevel::kError, why);
     } catch (...) {
     }
   };
   try {
     const Configuration config = configuration();
     if (!config.error.empty()) {
+      reply.outcome = PlanOutcome::kBadParameters;
       reply.error = config.error + ": refusing to plan until it is fixed";
-      say(LogLevel::kError, reply.error);
       return reply;
     }
     // Asked by every loop of the plan that grows with the map, on any of its threads.
@@ -142,8 +167,8 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
         turn_free_.wait(lock, free);
       } else if (!turn_free_.wait_until(lock, deadline, free)) {
         lock.unlock();
+        reply.outcome = PlanOutcome::kTimeLimit;
         reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
-        say(LogLevel::kWarn, reply.error);
         return reply;
       }
       planning_ = true;
@@ -199,13 +224,13 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   record.goal = request.goal;
   record.tolerance = tolerance;
   const auto finish = [&](PlanReply& done) -> PlanReply& {
-    record.outcome = describeOutcome(done.ok, done.error, done.result, costmap.frame.resolution);
+    record.outcome = describeOutcome(done.ok(), std::string(toName(done.outcome)) + ": " + done.error, done.result,
+                                     costmap.frame.resolution);
     {
       std::lock_guard<std::mutex> lock(last_plan_mutex_);
       last_plan_ = record;
     }
-    if (!done.ok) {
-      say(LogLevel::kWarn, done.error);
+    if (!done.ok()) {
       if (settings_.save_costmap_on_failure && !costmap.cells.empty()) {
         ReplayJob job;
         job.prefix = "eaci_failed_plan";
@@ -219,22 +244,27 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     }
     return done;
   };
-  const auto failure = [&](const std::string& why) -> PlanReply {
+  const auto failure = [&](PlanOutcome outcome, const std::string& why) -> PlanReply {
+    reply.outcome = outcome;
     reply.error = why;
     return finish(reply);
   };
+  const auto stop_outcome = [&] { return stoppedOutcome(static_cast<StopReason>(stop_reason.load())); };
 
   const eaci::MapFrame& frame = costmap.frame;
-  if (frame.width <= 0 || frame.height <= 0) return failure("the costmap is empty (" + sizeOf(frame) + ")");
+  if (frame.width <= 0 || frame.height <= 0)
+    return failure(PlanOutcome::kBadCostmap, "the costmap is empty (" + sizeOf(frame) + ")");
   if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
-    return failure("the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
+    return failure(PlanOutcome::kBadCostmap,
+                   "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
   const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
   if (cell_count > kMaxCostmapCells)
-    return failure("the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
-                   std::to_string(kMaxCostmapCells) + " cells");
+    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) +
+                                                 " is larger than the planner's cap of " +
+                                                 std::to_string(kMaxCostmapCells) + " cells");
   if (costmap.cells.size() != cell_count)
-    return failure("the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
-                   " it claims");
+    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells.size()) +
+                                                 " cells, not the " + sizeOf(frame) + " it claims");
   if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
     const std::string stood_in = emptied_stand_in_.standIn(costmap, std::chrono::steady_clock::now());
     if (!stood_in.empty() && stood_in != emptied_reported_) say(LogLevel::kInfo, stood_in);
@@ -242,14 +272,16 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   }
 
   const auto start_cell = frame.worldToCell(request.start);
-  if (!start_cell) return failure("start " + where(request.start) + " is off the costmap");
+  if (!start_cell) return failure(PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap");
   const auto goal_cell = frame.worldToCell(request.goal);
-  if (!goal_cell) return failure("goal " + where(request.goal) + " is off the costmap");
+  if (!goal_cell) return failure(PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap");
   eaci::CellInterpretation interpretation =
       eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
   interpretation.unknown_value = kCostmapUnknown;
   const StartCellCheck start_check = openStartCell(costmap, interpretation, *start_cell, should_stop);
-  if (!start_check.ok) return failure("start " + where(request.start) + ": " + start_check.error);
+  if (!start_check.ok)
+    return failure(start_check.stopped ? stop_outcome() : start_check.outcome,
+                   "start " + where(request.start) + ": " + start_check.error);
   reply.start_cells_opened = start_check.cells_opened;
   if (start_check.cells_opened > 0)
     say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
@@ -258,19 +290,23 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
 
   const eaci::GridView view(costmap.cells.data(), frame.width, frame.height, costmap.order, interpretation);
+  const bool goal_free = view.isFree(*goal_cell);
   // The goal tolerance, as navfn's: the route ends on the cell nearest to the goal, within the
   // tolerance, that the start can reach. First the nearest free cell (the goal itself when it is
   // free: no extra work in the normal case); only when no route reaches it, a flood from the
   // start finds the nearest reachable cell (a free cell behind a wall must not win).
   const double radius_cells = tolerance / frame.resolution;
   const auto stopped_while = [&](const std::string& what) {
-    return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
+    return failure(stop_outcome(),
+                   std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
   };
   std::optional<eaci::Cell> target = eaci::nearestFreeCell(view, *goal_cell, radius_cells, should_stop);
   if (!target) {
-    if (stop_reason.load() != static_cast<int>(StopReason::kNone)) return stopped_while("looking for a free cell near the goal");
-    return failure("goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
-                   eaci::formatNumber(tolerance) + " m of it");
+    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
+      return stopped_while("looking for a free cell near the goal");
+    return failure(PlanOutcome::kGoalBlocked, "goal " + where(request.goal) +
+                                                  " is in an obstacle and no free cell lies within " +
+                                                  eaci::formatNumber(tolerance) + " m of it");
   }
 
   useLandmarksFor(frame, options.landmarks);
@@ -285,8 +321,9 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
       return stopped_while("looking for a cell near the goal that the start can reach");
     if (!reachable)
-      return failure("goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
-                     eaci::formatNumber(tolerance) + " m of it");
+      return failure(goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked,
+                     "goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
+                         eaci::formatNumber(tolerance) + " m of it");
     if (!(*reachable == *target)) {  // else the plan failed for another reason: its error stands
       say(LogLevel::kInfo, "no route reaches " + where(frame.cellToWorld(*target)) + ": planning to " +
                                where(frame.cellToWorld(*reachable)) +
@@ -298,15 +335,18 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   reportLandmarks(frame);
   if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
   if (!reply.result.success()) {
-    if (!reply.result.interrupted) return failure(reply.result.error);
+    if (reply.result.status != eaci::PlanStatus::kStopped)
+      return failure(outcomeOf(reply.result.status, goal_free), reply.result.error);
     if (reply.stopped_by == StopReason::kTimeLimit)
-      return failure("no route found within max_planning_time (" + eaci::formatNumber(options.max_planning_time) + " s)");
-    return failure(std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
-                   " iterations, before a route was found");
+      return failure(PlanOutcome::kTimeLimit, "no route found within max_planning_time (" +
+                                                  eaci::formatNumber(options.max_planning_time) + " s)");
+    return failure(stoppedOutcome(reply.stopped_by), std::string(toString(reply.stopped_by)) + " after " +
+                                                         std::to_string(reply.result.iterations_run) +
+                                                         " iterations, before a route was found");
   }
   const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target);
   if (!defect.empty())
-    return failure("internal error: the planner's route is not drivable (" + defect + "); no plan");
+    return failure(PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan");
   // The route that goes out is result.smoothed_path: walked through every cell its segments
   // pass; if the smoother got one wrong, the grid route (just checked) goes out instead.
   if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
@@ -323,7 +363,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              std::to_string(reply.result.iterations_run) + " iterations: returning " +
                              (reply.result.route_from_search ? "the cheapest route the islands sit on (no ant had arrived yet)"
                                                              : "the best route so far"));
-  reply.ok = true;
+  reply.outcome = PlanOutcome::kOk;
   return finish(reply);
 }
 
@@ -401,4 +441,4 @@ std::string PlanningService::saveCostmap(CostmapSnapshot costmap, ReplayFiles& f
   }
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -29,14 +29,17 @@
 #include "costmap_snapshot.hpp"
 #include "eaci/planner.hpp"
 #include "plan_cancellation.hpp"
+#include "plan_outcome.hpp"
 #include "planner_options.hpp"
 #include "replay_writer.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // Why a plan stopped before it was done.
 enum class StopReason { kNone, kTimeLimit, kCancelled, kShutdown };
 const char* toString(StopReason reason);
+// The outcome of a plan that `reason` stopped before any route was found (kInternalError for kNone).
+PlanOutcome stoppedOutcome(StopReason reason);
 
 enum class LogLevel { kDebug, kInfo, kWarn, kError };
 // Where the service's log lines go (the adapters: rosconsole). Called on the planning thread,
@@ -72,8 +75,11 @@ struct PlanRequest {
 };
 
 struct PlanReply {
-  bool ok = false;
-  std::string error;            // one line when !ok
+  // Why the plan ended as it did, set on every path (kOk: a route, possibly the best so far
+  // when a stop came after one was found: stopped_by says so). Adapters decide from this.
+  PlanOutcome outcome = PlanOutcome::kInternalError;
+  bool ok() const { return outcome == PlanOutcome::kOk; }
+  std::string error;            // one line (for people) when !ok()
   // The core's result; result.smoothed_path is the route a robot drives (the grid route, `path`,
   // when a smoothed segment failed the last check).
   eaci::PlanResult result;
@@ -104,7 +110,9 @@ class PlanningService {
 
   // Plans on `costmap` (moved in: the service owns and may change the copy, e.g. opening the
   // robot's cell). Never throws: every failure, an allocation failure included, is a reply
-  // with !ok and the reason, and the next plan works. Returns within max_planning_time (the
+  // with its outcome (!ok()) and the reason, and the next plan works. A failed plan is not
+  // logged here: the adapter logs the reply's outcome and sentence (the service logs only what
+  // the reply does not carry: a start opened, a goal moved, landmarks). Returns within max_planning_time (the
   // time spent waiting for another plan to finish counts), after ~cancel, or when
   // settings.shutting_down says so, with the best route so far or a failure.
   PlanReply plan(CostmapSnapshot costmap, const PlanRequest& request) noexcept;
@@ -159,4 +167,4 @@ class PlanningService {
   std::unique_ptr<ReplayWriter> writer_;
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

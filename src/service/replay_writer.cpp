@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace eaci_ros {
+namespace eaci_service {
 
 namespace fs = std::filesystem;
 
@@ -87,4 +87,4 @@ void ReplayWriter::prune(const std::string& prefix) const {
       fs::remove(fs::path(directory_) / (stamps[i] + ending), error);
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

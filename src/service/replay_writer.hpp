@@ -14,7 +14,7 @@
 
 #include "costmap_replay.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 struct ReplayJob {
   std::string prefix;  // the files' name starts with it (timestampedName)
@@ -57,4 +57,4 @@ class ReplayWriter {
   std::thread thread_;                // started with the first job
 };
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 std::string describe(eaci::Cell c) { return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ")"; }
@@ -72,4 +72,4 @@ std::string drivableRouteDefect(const eaci::GridView& view, const eaci::CellPath
   return "";
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -8,7 +8,7 @@
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/grid_view.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 // "" when `route` runs from `from` to `to` by 8-neighbour moves over cells `view` lets a robot
 // cross, never between two blocked cells that touch at a corner; else what is wrong.
@@ -23,4 +23,4 @@ std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route,
 std::string drivableRouteDefect(const eaci::GridView& view, const eaci::CellPath& corners, eaci::Cell from,
                                 eaci::Cell to, bool allow_corner_cutting);
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

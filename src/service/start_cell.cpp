@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace eaci_ros {
+namespace eaci_service {
 
 StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpretation& interpretation,
                              eaci::Cell start, const std::function<bool()>& should_stop) {
@@ -17,6 +17,7 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
   const int width = costmap.frame.width, height = costmap.frame.height;
   const auto contains = [&](eaci::Cell c) { return c.row >= 0 && c.col >= 0 && c.row < height && c.col < width; };
   if (!contains(start)) {
+    check.outcome = PlanOutcome::kStartOffMap;
     check.error = "the start cell is off the costmap";
     return check;
   }
@@ -27,6 +28,7 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
     return check;
   }
   if (check.start_cost == kCostmapLethal) {
+    check.outcome = PlanOutcome::kStartBlocked;
     check.error = "the start is in a lethal obstacle (costmap cost 254): the robot's centre is inside an obstacle";
     return check;
   }
@@ -54,6 +56,7 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
     open.pop();
     if (here_cost > labels[here].cost) continue;
     if (should_stop && ++popped % 4096 == 0 && should_stop()) {
+      check.stopped = true;
       check.error = "stopped while looking for the way out of the inflated band around the start";
       return check;
     }
@@ -73,6 +76,7 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
     }
   }
   if (exit == kNoParent) {
+    check.outcome = PlanOutcome::kStartBlocked;
     check.error = "the start is in the inflated band of an obstacle and no free cell can be reached from it";
     return check;
   }
@@ -86,4 +90,4 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
   return check;
 }
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -10,13 +10,18 @@
 #include <string>
 
 #include "costmap_snapshot.hpp"
+#include "plan_outcome.hpp"
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/grid_view.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 
 struct StartCellCheck {
   bool ok = false;
+  // When !ok: kStartOffMap or kStartBlocked (lethal, or no way out of the band); kOk with
+  // `stopped` when should_stop ended the search first (the caller knows which stop).
+  PlanOutcome outcome = PlanOutcome::kOk;
+  bool stopped = false;
   std::string error;       // when !ok: why no plan can start here
   int cells_opened = 0;    // cells of the band made passable (0: the start cell was free)
   std::uint8_t start_cost = 0;  // the start cell's cost before
@@ -34,4 +39,4 @@ struct StartCellCheck {
 StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpretation& interpretation,
                              eaci::Cell start, const std::function<bool()>& should_stop = {});
 
-}  // namespace eaci_ros
+}  // namespace eaci_service

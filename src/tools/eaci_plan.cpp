@@ -1,7 +1,8 @@
 // eaci_plan: plan one route on a map with EACI, classic ACO or A*, print a summary, and
 // optionally write a JSON report and a PNG picture.
 //
-// Exit status: 0 path found, 3 no path, 2 bad input (arguments, map, parameters, start/goal).
+// Exit status: 0 path found, 2 bad input (arguments, map, parameters, start/goal), 3 no path,
+// 4 stopped (SIGINT/SIGTERM) before a path was found; the JSON's "outcome" names it finer.
 // Every failure prints one line "eaci_plan: error: <reason>" on stderr.
 
 #include <algorithm>
@@ -43,16 +44,42 @@ namespace {
 
 using eaci::formatNumber;
 
+// Exit status by outcome (the JSON's "outcome" names it finer): 0 a route; 2 bad input (the
+// arguments, the map, the parameters, a start or goal off the map or in an obstacle); 3 no
+// route joins a usable start and goal; 4 stopped (SIGINT/SIGTERM) before a route was found.
 constexpr int kExitPath = 0;
 constexpr int kExitBadInput = 2;
 constexpr int kExitNoPath = 3;
+constexpr int kExitStopped = 4;
 constexpr const char* kErrorPrefix = "eaci_plan: error: ";
 
-// Bad input found by the CLI itself (exit 2).
+// Bad input found by the CLI itself (exit 2): the status plan() would give it, or none for the
+// arguments themselves (the JSON's outcome "bad_input").
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message, std::optional<eaci::PlanStatus> status = std::nullopt)
+      : std::runtime_error(message), status_(status) {}
+  std::optional<eaci::PlanStatus> status() const { return status_; }
+
+ private:
+  std::optional<eaci::PlanStatus> status_;
 };
+
+// The exit status of a plan() that found no route: its status decides, never its sentence.
+int exitCodeOf(eaci::PlanStatus status) {
+  switch (status) {
+    case eaci::PlanStatus::kSuccess: return kExitPath;
+    case eaci::PlanStatus::kNoPath: return kExitNoPath;
+    case eaci::PlanStatus::kStopped: return kExitStopped;
+    case eaci::PlanStatus::kStartOffMap:
+    case eaci::PlanStatus::kStartBlocked:
+    case eaci::PlanStatus::kGoalOffMap:
+    case eaci::PlanStatus::kGoalBlocked:
+    case eaci::PlanStatus::kInvalidParameters:
+    case eaci::PlanStatus::kInvalidMap: return kExitBadInput;
+  }
+  return kExitBadInput;
+}
 
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void onInterrupt(int) { g_interrupted = 1; }
@@ -88,7 +115,7 @@ void applyParameterFile(eaci::Parameters& p, const std::string& file) {
   try {
     eaci::applyParameterFile(file, p, "--params '" + file + "'");
   } catch (const eaci::ParameterFileError& e) {
-    throw InputError(e.what());
+    throw InputError(e.what(), eaci::PlanStatus::kInvalidParameters);
   }
 }
 
@@ -105,7 +132,7 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
     try {
       eaci::setParameter(p, kv.first, kv.second);
     } catch (const eaci::ParameterError& e) {
-      throw InputError(std::string("--set ") + assignment + ": " + e.what());
+      throw InputError(std::string("--set ") + assignment + ": " + e.what(), eaci::PlanStatus::kInvalidParameters);
     }
   }
   if (!o.unknown.empty()) p.allow_unknown = o.unknown != "obstacle";
@@ -113,11 +140,11 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
     try {
       eaci::setParameter(p, "seed", o.seed);
     } catch (const eaci::ParameterError& e) {
-      throw InputError(std::string("--") + e.what());  // "--seed: 'x' is not an integer"
+      throw InputError(std::string("--") + e.what(), eaci::PlanStatus::kInvalidParameters);  // "--seed: 'x' is not an integer"
     }
   }
   const std::string error = eaci::validationError(p);
-  if (!error.empty()) throw InputError("invalid parameter: " + error);
+  if (!error.empty()) throw InputError("invalid parameter: " + error, eaci::PlanStatus::kInvalidParameters);
 }
 
 // One of R,C / serial / X,Y (exactly one is set; checked before).
@@ -131,7 +158,8 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
       if (g < 1 || g > count)
         throw InputError("--" + name + "-cell " + std::to_string(g) + " is off the map: serial numbers run 1.." +
                          std::to_string(count) + " on this " + std::to_string(map.width) + " x " +
-                         std::to_string(map.height) + " map");
+                         std::to_string(map.height) + " map",
+                         name == "start" ? eaci::PlanStatus::kStartOffMap : eaci::PlanStatus::kGoalOffMap);
       return eaci::cellFromSerial(g, map.width);
     }
     const auto [x, y] = eaci::cli::parseXY(xy, "--" + name + "-xy");
@@ -139,7 +167,8 @@ eaci::Cell resolveEndpoint(const eaci::OccupancyMap& map, const std::string& rc,
     if (!cell) {
       const double x1 = map.origin.x() + map.width * map.resolution, y1 = map.origin.y() + map.height * map.resolution;
       throw InputError("--" + name + "-xy " + xy + " is off the map (x " + formatNumber(map.origin.x()) + " .. " +
-                       formatNumber(x1) + " m, y " + formatNumber(map.origin.y()) + " .. " + formatNumber(y1) + " m)");
+                       formatNumber(x1) + " m, y " + formatNumber(map.origin.y()) + " .. " + formatNumber(y1) + " m)",
+                       name == "start" ? eaci::PlanStatus::kStartOffMap : eaci::PlanStatus::kGoalOffMap);
     }
     return *cell;
   } catch (const std::invalid_argument& e) {
@@ -311,7 +340,10 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
 int run(int argc, char** argv) {
   Options o;
   CLI::App app{"Plan a route on an occupancy map with EACI (Li, Li & Cui 2025), classic ACO or A*.\n"
-               "Exit status: 0 path found, 3 no path, 2 bad input.",
+               "Exit status: 0 path found; 2 bad input (arguments, map, parameters, start or goal off the map or\n"
+               "in an obstacle); 3 no path; 4 stopped (SIGINT/SIGTERM) before a path was found. The JSON's\n"
+               "\"outcome\" names it: ok, no_path, stopped, start_off_map, start_blocked, goal_off_map,\n"
+               "goal_blocked, invalid_parameters, invalid_map, bad_input.",
                "eaci_plan"};
   app.option_defaults()->always_capture_default();
   app.add_option("--map", o.map_path, "map: .yaml (map_server), .map (MovingAI benchmark map) or .txt (0/1 matrix, first line = top row)")
@@ -377,13 +409,14 @@ int run(int argc, char** argv) {
   std::vector<std::uint8_t> inflated;  // the map's costmap_2d costs with --inflate
   eaci::GridView planning_view;        // what the planners read: the map, or `inflated`
 
-  // Any failure before plan(): report it in the JSON (as far as known) and exit 2.
-  auto fail = [&](const std::string& message) {
+  // Any failure before plan(): report it in the JSON (as far as known, with its outcome word) and exit 2.
+  auto fail = [&](const std::string& message, std::optional<eaci::PlanStatus> status) {
     context.map = map ? &*map : nullptr;
+    context.bad_input = !status;
     context.parameters = params;
     eaci::PlanResult failed;
     failed.algorithm = algorithm;
-    failed.status = eaci::PlanStatus::kInvalidInput;
+    failed.status = status.value_or(eaci::PlanStatus::kInvalidParameters);  // not written with bad_input
     failed.error = errorLine(message);
     writeOutputs(o, failed, context, unknown, params);
     printError(message);
@@ -420,7 +453,8 @@ int run(int argc, char** argv) {
       const std::optional<eaci::Cell> free = eaci::nearestFreeCell(planning_view, *context.goal, cells);
       if (!free)
         throw InputError("goal " + describeCell(*map, *context.goal) + " is not on free space and no free cell lies within --tolerance " +
-                         formatNumber(tolerance) + " m (" + formatNumber(cells, 2) + " cells) of it");
+                         formatNumber(tolerance) + " m (" + formatNumber(cells, 2) + " cells) of it",
+                         eaci::PlanStatus::kGoalBlocked);
       // As the planning service does it (navfn's rule): the cell nearest the goal within the
       // tolerance that the start can reach, so a replay of a move_base plan ends where it did.
       std::optional<eaci::Cell> target = free;
@@ -434,13 +468,13 @@ int run(int argc, char** argv) {
       }
     }
   } catch (const InputError& e) {
-    return fail(e.what());
+    return fail(e.what(), e.status());
   } catch (const eaci::MapLoadError& e) {
-    return fail(e.what());
+    return fail(e.what(), eaci::PlanStatus::kInvalidMap);
   } catch (const eaci::ParameterError& e) {
-    return fail(std::string("invalid parameter: ") + e.what());
+    return fail(std::string("invalid parameter: ") + e.what(), eaci::PlanStatus::kInvalidParameters);
   } catch (const YAML::Exception& e) {
-    return fail(e.what());
+    return fail(e.what(), std::nullopt);
   }
   context.parameters = params;
 
@@ -459,7 +493,7 @@ int run(int argc, char** argv) {
   const Outputs written = writeOutputs(o, result, context, unknown, params);
   if (!result.success()) {
     printError(result.error.empty() ? "planning failed" : result.error);
-    return result.status == eaci::PlanStatus::kNoPath ? kExitNoPath : kExitBadInput;
+    return exitCodeOf(result.status);
   }
   if (!written.json_error.empty()) {
     printError(written.json_error);

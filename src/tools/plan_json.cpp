@@ -25,23 +25,20 @@ using report::finiteOrNull;
 
 json optionalCellJson(const std::optional<Cell>& c) { return c ? json(*c) : json(nullptr); }
 
-const char* statusName(PlanStatus s) {
-  switch (s) {
-    case PlanStatus::kSuccess: return "success";
-    case PlanStatus::kNoPath: return "no_path";
-    case PlanStatus::kInvalidInput: return "invalid_input";
-  }
-  return "?";
-}
-
 }  // namespace
+
+std::string outcomeWord(const PlanResult& result, const PlanContext& context) {
+  if (context.bad_input) return "bad_input";
+  return result.success() ? "ok" : toString(result.status);
+}
 
 json planToJson(const PlanResult& r, const PlanContext& context) {
   const OccupancyMap* map = context.map;
   json j;
   j["success"] = r.success();
+  j["outcome"] = outcomeWord(r, context);
   if (!r.success()) j["error"] = r.error.empty() ? std::string("failed") : r.error;
-  j["status"] = statusName(r.status);
+  j["status"] = context.bad_input ? json(nullptr) : json(toString(r.status));
   j["algorithm"] = toString(r.algorithm);
 
   const bool has_length = r.success() && std::isfinite(r.length);

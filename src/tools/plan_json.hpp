@@ -27,9 +27,16 @@ struct PlanContext {
   // The cells the planners read when they are not the map's own (--inflate: the map's costmap_2d
   // costs); min_clearance_m and mean_cell_cost are measured on them. Empty: the map.
   std::optional<GridView> planned_on;
+  // The run failed before plan() on the arguments themselves (not a status of plan()'s):
+  // outcome "bad_input", status null.
+  bool bad_input = false;
 };
 
-// The report: success, error (only when failed), status, algorithm, length, cost, length_m,
+// The JSON's "outcome": a stable snake_case word: "ok" for a route, "bad_input" (above), else
+// the status's word (eaci::toString(PlanStatus): no_path, stopped, start_off_map, ...).
+std::string outcomeWord(const PlanResult& result, const PlanContext& context);
+
+// The report: success, outcome, error (only when failed), status, algorithm, length, cost, length_m,
 // min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
 // iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
 // ants_per_iteration, lost_ants_per_iteration, best_cost_per_iteration, best_cost_so_far (null where

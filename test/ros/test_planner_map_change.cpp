@@ -58,12 +58,14 @@ class MapChange : public ::testing::Test {
   }
 
   // The request gets an empty plan and the node names why: a warning or error of its own that
-  // holds `part` (the wording of src/service/planning_service.cpp and eaci::plan).
+  // holds the outcome's word ("no plan (no_path)", PlanOutcome) and `part` of the sentence.
   void expectRefusedWith(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-                         const std::string& part) {
+                         const std::string& outcome, const std::string& part) {
     log_.clear();
     EXPECT_TRUE(plan(start, goal).plan.poses.empty()) << "planned a request that must fail";
-    EXPECT_NE(log_.waitFor({part}), "") << "no line of the node holds '" << part << "'; it said:" << log_.seen();
+    const std::string word = "no plan (" + outcome + ")";
+    EXPECT_NE(log_.waitFor({word, part}), "")
+        << "no line of the node holds '" << word << "' and '" << part << "'; it said:" << log_.seen();
   }
 
   // Publishes `map` and waits until the node plans on it: a probe request from `probe_start`
@@ -101,7 +103,7 @@ TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");
   // A goal beyond this map is refused as off it.
-  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal_off_map", "goal (4.55, 1.55)");
 
   // 2. The map grows to 6 x 4 m and its origin moves to (-1, -1) (the same world point is now
   //    another cell); a wall with a door at the top now stands at x = 1.55 m, across the straight
@@ -121,13 +123,13 @@ TEST_F(MapChange, RoutesFollowAMapThatGrowsMovesAndChangesBetweenRequests) {
 
   // 2b. The same wall without its door: the far goal is on the map and free, but unreachable.
   publish(room(60, 40, {-1.0, -1.0}, /*wall_col=*/25));
-  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "cannot be reached from start");
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "no_path", "cannot be reached");
 
   // 3. The map shrinks again (a rolling window moving away): the far goal is refused, the near
   //    one is planned on the small map's cells, and a start now off the map is refused.
   publish(small);
-  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal (4.550, 1.550) is off the costmap");
-  expectRefusedWith(mapPose(-0.55, -0.55), mapPose(1.55, 1.55), "start (-0.550, -0.550) is off the costmap");
+  expectRefusedWith(mapPose(0.35, 0.35), mapPose(4.55, 1.55), "goal_off_map", "goal (4.55, 1.55)");
+  expectRefusedWith(mapPose(-0.55, -0.55), mapPose(1.55, 1.55), "start_off_map", "start (-0.55, -0.55)");
   response = plan(mapPose(0.35, 0.35), mapPose(2.55, 1.55));
   ASSERT_GE(response.plan.poses.size(), 2u);
   EXPECT_EQ(defect(small, response.plan, 0.35, 0.35, 2.55, 1.55), "");

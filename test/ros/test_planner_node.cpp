@@ -39,7 +39,7 @@ class PlannerNode : public ::testing::Test {
     bool connected = false;
     for (int k = 0; k < 50 && !connected; ++k) {
       plan(mapPose(0.4, 0.4), mapPose(10.0, 10.0));
-      connected = !log_.waitFor({"is off the costmap"}, 0.2).empty();
+      connected = !log_.waitFor({"no plan (goal_off_map)"}, 0.2).empty();
     }
     ASSERT_TRUE(connected) << "no warning of eaci_planner_node on /rosout";
   }
@@ -91,26 +91,27 @@ TEST_F(PlannerNode, PlansACollisionFreeRouteAcrossTheLab) {
   EXPECT_LT(length, 1.2 * 4.9113);  // A* optimum on this map: 98.2254 cells = 4.9113 m
 }
 
-// Each bad request fails for its own reason, which the node names (src/service/planning_service.cpp
-// and src/ros/ros_planner.cpp word them; positions are printed with three decimals).
+// Each bad request fails for its own reason: the node's line holds the outcome's word ("no plan
+// (goal_blocked)", PlanOutcome) and the sentence (src/service/planning_service.cpp and
+// src/ros/ros_planner.cpp word them; positions with up to three decimals, eaci::formatNumber).
 TEST_F(PlannerNode, BadRequestsGetAnEmptyPlanNamingTheirFaultAndTheNodeStaysUp) {
   // Goal in the border wall (the map's bottom-left cell), no tolerance.
   EXPECT_FALSE(freeAt(0.025, 0.025));
   expectRefusedWith(mapPose(0.4, 0.4), mapPose(0.025, 0.025),
-                    {"goal (0.025, 0.025) is in an obstacle and no free cell lies within 0 m of it"});
+                    {"no plan (goal_blocked)", "goal (0.025, 0.025) is in an obstacle"});
   // Start in the wall.
   EXPECT_FALSE(freeAt(0.025, 1.0));
-  expectRefusedWith(mapPose(0.025, 1.0), mapPose(4.4, 2.6), {"start (0.025, 1.000): the start is in a lethal obstacle"});
+  expectRefusedWith(mapPose(0.025, 1.0), mapPose(4.4, 2.6), {"no plan (start_blocked)", "start (0.025, 1)"});
   // Off the map (4.8 x 3.0 m from the origin).
-  expectRefusedWith(mapPose(0.4, 0.4), mapPose(10.0, 10.0), {"goal (10.000, 10.000) is off the costmap"});
-  expectRefusedWith(mapPose(-1.0, 0.4), mapPose(4.4, 2.6), {"start (-1.000, 0.400) is off the costmap"});
+  expectRefusedWith(mapPose(0.4, 0.4), mapPose(10.0, 10.0), {"no plan (goal_off_map)", "goal (10, 10)"});
+  expectRefusedWith(mapPose(-1.0, 0.4), mapPose(4.4, 2.6), {"no plan (start_off_map)", "start (-1, 0.4)"});
   // A frame nobody publishes.
   expectRefusedWith(mapPose(0.4, 0.4, "nowhere"), mapPose(4.4, 2.6),
-                    {"the start is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
+                    {"no plan (start_off_map)", "the start is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
   expectRefusedWith(mapPose(0.4, 0.4), mapPose(4.4, 2.6, "nowhere"),
-                    {"the goal is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
+                    {"no plan (goal_off_map)", "the goal is in frame 'nowhere', the costmap in 'map'", "cannot be transformed"});
   // NaN: no cell holds it.
-  expectRefusedWith(mapPose(std::nan(""), 0.4), mapPose(4.4, 2.6), {"start (", "nan, 0.400) is off the costmap"});
+  expectRefusedWith(mapPose(std::nan(""), 0.4), mapPose(4.4, 2.6), {"no plan (start_off_map)", "nan, 0.4)"});
   // Still answering.
   EXPECT_FALSE(plan(mapPose(0.4, 0.4), mapPose(4.4, 2.6)).plan.poses.empty());
 }

@@ -12,7 +12,7 @@
 
 #include "planning_service.hpp"
 
-namespace eaci_ros::test {
+namespace eaci_service::test {
 
 // A costmap of `width` x `height` free cells of 1 m, origin (0, 0), top row first in the buffer.
 inline CostmapSnapshot openCostmap(int width, int height) {
@@ -85,4 +85,4 @@ inline void configure(PlanningService& service, const PlanningService::Configura
   service.configure(config.params, config.options, config.error);
 }
 
-}  // namespace eaci_ros::test
+}  // namespace eaci_service::test

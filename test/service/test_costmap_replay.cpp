@@ -45,8 +45,8 @@ class CostmapReplay : public ::testing::Test {
 //   top    (buffer row 2):   0   0   0   0   0
 //   middle (buffer row 1):   0 254 254 254   0      a wall with a gap at each end
 //   bottom (buffer row 0):   0  90   0   0   0
-eaci_ros::CostmapSnapshot labSnapshot() {
-  eaci_ros::CostmapSnapshot snapshot;
+eaci_service::CostmapSnapshot labSnapshot() {
+  eaci_service::CostmapSnapshot snapshot;
   snapshot.cells = {0, 90, 0, 0, 0, 0, 254, 254, 254, 0, 0, 0, 0, 0, 0};
   snapshot.frame.width = 5;
   snapshot.frame.height = 3;
@@ -57,17 +57,17 @@ eaci_ros::CostmapSnapshot labSnapshot() {
 }
 
 TEST_F(CostmapReplay, FilesReadBackAndTheCommandReplaysTheRequest) {
-  const eaci_ros::CostmapSnapshot costmap = labSnapshot();
+  const eaci_service::CostmapSnapshot costmap = labSnapshot();
   eaci::Parameters params;
   params.lethal_cost = 200;
   params.allow_unknown = true;
   params.seed = 7;
-  eaci_ros::PlanRecord request;
+  eaci_service::PlanRecord request;
   request.start = costmap.frame.cellToWorld(eaci::Cell{2, 0});  // bottom left (eaci::Cell row 0 = top)
   request.goal = costmap.frame.cellToWorld(eaci::Cell{2, 4});   // bottom right
   request.tolerance = 0.1;
   request.outcome = "route: cost 8, length 8 cells";
-  const eaci_ros::ReplayFiles files = eaci_ros::saveCostmapForReplay(
+  const eaci_service::ReplayFiles files = eaci_service::saveCostmapForReplay(
       dir_.string(), "snap", costmap, params, eaci::Algorithm::kAStar, request, {"a note"});
 
   EXPECT_EQ(files.map_yaml, (dir_ / "snap.yaml").string());
@@ -111,7 +111,7 @@ TEST_F(CostmapReplay, FilesReadBackAndTheCommandReplaysTheRequest) {
 }
 
 TEST_F(CostmapReplay, WithoutARequestOnlyTheNotesAreWritten) {
-  const eaci_ros::ReplayFiles files = eaci_ros::saveCostmapForReplay(
+  const eaci_service::ReplayFiles files = eaci_service::saveCostmapForReplay(
       dir_.string(), "plain", labSnapshot(), eaci::Parameters{}, eaci::Algorithm::kEaci, std::nullopt, {"no plan yet"});
   EXPECT_TRUE(files.command.empty());
   const std::string yaml = readText(files.map_yaml);

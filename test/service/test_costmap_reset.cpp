@@ -8,7 +8,7 @@
 #include "costmap_reset.hpp"
 #include "service_test_support.hpp"
 
-namespace eaci_ros {
+namespace eaci_service {
 namespace {
 
 using Clock = EmptiedCostmapStandIn::Clock;
@@ -129,7 +129,7 @@ PlanReply planOnAGrownEmptiedCostmap(bool stand_in) {
   CostmapSnapshot filled = test::openCostmap(10, 5);
   for (int row = 0; row <= 3; ++row) test::at(filled, row, 5) = kCostmapLethal;
   const PlanReply first = service.plan(filled, test::request(filled, {2, 1}, {2, 8}));
-  EXPECT_TRUE(first.ok) << first.error;
+  EXPECT_TRUE(first.ok()) << first.error;
   EXPECT_FALSE(crossesTheWall(first.result.path));
   CostmapSnapshot emptied = test::openCostmap(12, 5);
   std::fill(emptied.cells.begin(), emptied.cells.end(), kCostmapUnknown);
@@ -138,7 +138,7 @@ PlanReply planOnAGrownEmptiedCostmap(bool stand_in) {
 
 TEST(CostmapReset, APlanOnAnEmptiedCostmapKeepsToTheWallsTheLastOneShowed) {
   const PlanReply reply = planOnAGrownEmptiedCostmap(true);
-  ASSERT_TRUE(reply.ok) << reply.error;
+  ASSERT_TRUE(reply.ok()) << reply.error;
   EXPECT_FALSE(crossesTheWall(reply.result.path));
   EXPECT_FALSE(crossesTheWall(reply.result.smoothed_path));
   EXPECT_EQ(reply.frame.width, 12);
@@ -146,9 +146,9 @@ TEST(CostmapReset, APlanOnAnEmptiedCostmapKeepsToTheWallsTheLastOneShowed) {
 
 TEST(CostmapReset, WithoutTheStandInTheEmptiedCostmapShowsNoWall) {  // what the stand-in is for
   const PlanReply reply = planOnAGrownEmptiedCostmap(false);
-  ASSERT_TRUE(reply.ok) << reply.error;
+  ASSERT_TRUE(reply.ok()) << reply.error;
   EXPECT_TRUE(crossesTheWall(reply.result.path));
 }
 
 }  // namespace
-}  // namespace eaci_ros
+}  // namespace eaci_service

@@ -12,7 +12,7 @@
 namespace {
 
 using eaci::Cell;
-using eaci_ros::drivableRouteDefect;
+using eaci_service::drivableRouteDefect;
 
 // A costmap_2d-style map of `rows` ('.' free 0, '#' lethal 254, '?' unknown 255), top row
 // first, read with lethal_cost 253 and allow_unknown as given.
@@ -21,7 +21,7 @@ struct Map {
   int width = 0, height = 0;
   explicit Map(const std::vector<std::string>& rows) : width(static_cast<int>(rows[0].size())), height(static_cast<int>(rows.size())) {
     for (const std::string& row : rows)
-      for (char c : row) bytes.push_back(c == '#' ? eaci_ros::kCostmapLethal : c == '?' ? eaci_ros::kCostmapUnknown : 0);
+      for (char c : row) bytes.push_back(c == '#' ? eaci_service::kCostmapLethal : c == '?' ? eaci_service::kCostmapUnknown : 0);
   }
   eaci::GridView view(bool allow_unknown = true) const {
     return eaci::GridView(bytes.data(), width, height, eaci::RowOrder::kTopFirst,

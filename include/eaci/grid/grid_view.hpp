@@ -9,13 +9,13 @@
 #include <cstdint>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/costmap_costs.hpp"
 
 namespace eaci {
 
-// costmap_2d's dearest passable cost: INSCRIBED_INFLATED_OBSTACLE (253) - 1. An unknown cell
-// that may be crossed costs this on maps whose values are not costs (map files,
-// OccupancyGrid, 0/1 maps), so that the CostRule prices it as on a costmap.
-constexpr std::uint8_t kDearestPassableCost = 252;
+// costmap_2d's dearest passable cost, kCostmapDearestPassable (INSCRIBED_INFLATED_OBSTACLE - 1):
+// an unknown cell that may be crossed costs this on maps whose values are not costs (map
+// files, OccupancyGrid, 0/1 maps), so that the CostRule prices it as on a costmap.
 
 // What an unknown cell is: an obstacle, or passable at the dearest cost a passable cell can
 // have (allow_unknown), as navfn (COST_OBS - 1) and global_planner (lethal_cost - 1) price it:
@@ -46,9 +46,9 @@ struct CellInterpretation {
     return value >= lethal_cost;
   }
   // The cost of a passable unknown cell: the dearest a passable cell can cost, lethal_cost - 1
-  // on graded maps (costmap_2d: 252), kDearestPassableCost on the others.
+  // on graded maps (costmap_2d: 252), kCostmapDearestPassable on the others.
   std::uint8_t unknownCost() const {
-    if (!graded) return kDearestPassableCost;
+    if (!graded) return kCostmapDearestPassable;
     return lethal_cost > 0 ? static_cast<std::uint8_t>(lethal_cost - 1) : 0;
   }
   // The cost 0..254 of a cell that is not an obstacle.

@@ -48,7 +48,6 @@ class StopPoll {
   // Marks this poll stopped (a poll of another thread said so); never calls the check.
   void latch() { stopped_ = true; }
   bool canStop() const { return ask_ != nullptr; }
-  void setIteration(int iteration) { iteration_ = iteration; }
 
   // A poll of the same check for another thread: its own counter, stopped if this one is.
   StopPoll forAnotherThread() const {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "eaci/aco/colony_parameters.hpp"
+#include "eaci/grid/costmap_costs.hpp"
 #include "eaci/planner/parameter_text.hpp"
 
 namespace eaci {
@@ -36,7 +37,7 @@ struct Parameters : ColonyParameters {
   // OccupancyGrids have free cells of cost 0: a route's cost is its length there.
   double neutral_cost = 50.0;
   double cost_factor = 3.0;
-  int lethal_cost = 253;      // costmap_2d INSCRIBED_INFLATED_OBSTACLE
+  int lethal_cost = kCostmapInscribed;  // costmap_2d INSCRIBED_INFLATED_OBSTACLE
   bool allow_unknown = false; // the ROS layer defaults to true, as navfn and global_planner do
   // After the search, shortcut the 8-connected route by line of sight (path/smoothing.hpp):
   // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
