@@ -26,6 +26,9 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   } catch (const std::exception& e) {
     planner_.reset();
     ROS_ERROR("EaciGlobalPlanner %s: cannot start: %s (every plan will fail)", name.c_str(), e.what());
+  } catch (...) {  // move_base must not see an exception from a plugin's initialize (docs/ros.md: "everything")
+    planner_.reset();
+    ROS_ERROR("EaciGlobalPlanner %s: cannot start: an unknown exception (every plan will fail)", name.c_str());
   }
 }
 

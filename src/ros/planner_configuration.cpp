@@ -148,6 +148,8 @@ void PlannerConfiguration::onReconfigure(PlannerConfig& config) {
     in_force_ = config;
   } catch (const std::exception& e) {  // never into dynamic_reconfigure's (the host's) thread
     ROS_ERROR("%s: reconfigure failed: %s; the values in force stay", who_.c_str(), e.what());
+  } catch (...) {
+    ROS_ERROR("%s: reconfigure failed with an unknown exception; the values in force stay", who_.c_str());
   }
 }
 

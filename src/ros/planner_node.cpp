@@ -78,6 +78,8 @@ class PlannerNode {
                map->info.resolution, map->header.frame_id.c_str());
     } catch (const std::exception& e) {
       ROS_ERROR("eaci_planner_node: cannot use the new map: %s", e.what());
+    } catch (...) {
+      ROS_ERROR("eaci_planner_node: cannot use the new map: an unknown exception");
     }
   }
 
@@ -150,6 +152,9 @@ int main(int argc, char** argv) {
     ros::waitForShutdown();
   } catch (const std::exception& e) {
     ROS_FATAL("eaci_planner_node: %s", e.what());
+    return 1;
+  } catch (...) {
+    ROS_FATAL("eaci_planner_node: an unknown exception");
     return 1;
   }
   return 0;

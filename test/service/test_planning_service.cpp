@@ -8,6 +8,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -508,6 +510,142 @@ TEST(PlanningServiceThreads, ConcurrentPlansReconfigureAndCancel) {
   EXPECT_EQ(defects.load(), 0);
   EXPECT_EQ(routes + failures, 36);
   EXPECT_GT(routes.load(), 0);
+}
+
+// Issue #28, the turn-wait deadline: a plan that waits for another plan's turn gives up at its
+// own max_planning_time ("another plan held the planner ...") while the other still runs. Plan A
+// is an unbounded colony (no time limit, a million iterations) that only ~cancel stops; plan B,
+// with max_planning_time 0.2 s, must come back while A still runs. The 20 s below is a hang
+// guard, not a time bound. Checked by reverting the deadline (plan() waiting for the turn with
+// turn_free_.wait, unbounded, whatever the limit): B is still waiting after 20 s and this fails.
+TEST(PlanningServiceThreads, APlanWaitingForTheTurnGivesUpAtItsOwnMaxPlanningTime) {
+  auto a_running = std::make_shared<std::atomic<bool>>(false);
+  ServiceSettings s = settings();
+  s.shutting_down = [a_running] {  // asked by A's stop checks once A holds the turn
+    a_running->store(true);
+    return false;
+  };
+  auto log = std::make_shared<Log>();
+  auto service = std::make_shared<PlanningService>(s, log->logger());
+  configure(*service, unboundedColony());
+  const CostmapSnapshot costmap = openCostmap(40, 40);
+  const PlanRequest r = request(costmap, {1, 1}, {38, 38});
+  auto a = std::async(std::launch::async, [service, costmap, r] { return service->plan(costmap, r); });
+  while (!a_running->load()) std::this_thread::yield();
+  PlanningService::Configuration limited = unboundedColony();
+  limited.options.max_planning_time = 0.2;
+  configure(*service, limited);  // for the plans from now on; A keeps its own
+  auto b = std::async(std::launch::async, [service, costmap, r] { return service->plan(costmap, r); });
+  const bool b_returned = b.wait_for(std::chrono::seconds(20)) == std::future_status::ready;
+  const bool a_was_running = a.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+  EXPECT_TRUE(b_returned) << "the plan waiting for the turn did not give up at its max_planning_time";
+  while (a.wait_for(std::chrono::milliseconds(5)) != std::future_status::ready) service->cancel();
+  const PlanReply stopped = a.get();
+  EXPECT_EQ(stopped.stopped_by, StopReason::kCancelled);
+  const PlanReply waited = b.get();
+  if (b_returned) {
+    EXPECT_TRUE(a_was_running);
+    EXPECT_FALSE(waited.ok);
+    EXPECT_NE(waited.error.find("another plan held the planner for the whole max_planning_time (0.2 s)"),
+              std::string::npos)
+        << waited.error;
+  }
+}
+
+// Issue #28, the lock order (docs/ros.md "A planner a robot can trust", Locks): move_base's
+// planner thread holds the costmap's recursive mutex across makePlan while ~make_plan's thread
+// takes it to copy the costmap; so the service must never call back into anything of the
+// caller's (here: the log sink, which takes the costmap's mutex, as any of the caller's code may)
+// while it holds a lock of its own, or a cycle closes. Thread A holds the costmap mutex across
+// an unbounded plan; thread E, holding nothing, plans with max_planning_time 0.2 s and gives up
+// while A runs: its warning goes to the log sink, which waits for the costmap mutex (A holds
+// it). Thread B holds the costmap mutex around its plan (blocks until A is done); thread D
+// configures, reads the configuration and cancels over and over (its cancel ends A). Nothing may
+// hang (a hang guard of 30 s; a hang ends the test binary, the deadlocked threads cannot be
+// joined). The log sink also reads the configuration on the calling thread, so a configuration
+// lock held around a call-out would hang too. Checked by reverting the order in plan()'s timed
+// wait for the turn (the warning said while turn_mutex_ is still held, `lock.unlock()` after
+// say()): E holds turn_mutex_ and waits for the costmap mutex, A holds the costmap mutex and
+// waits for turn_mutex_ to give the turn back: the hang guard fires.
+TEST(PlanningServiceThreads, NoLockOfOursIsHeldWhileTheCallersCostmapLockIsTaken) {
+  struct Shared {
+    std::recursive_mutex costmap_mutex;  // boost::recursive_mutex in costmap_2d
+    std::atomic<bool> a_running{false};
+    std::atomic<bool> e_logging{false};
+    std::atomic<bool> done{false};
+    PlanningService* service = nullptr;
+    std::mutex lines_mutex;
+    std::vector<std::string> lines;
+  };
+  auto shared = std::make_shared<Shared>();
+  ServiceSettings s = settings();
+  s.shutting_down = [shared] {
+    shared->a_running.store(true);
+    return false;
+  };
+  const Logger sink = [shared](LogLevel, const std::string& line) {
+    if (line.find("another plan held the planner") != std::string::npos) shared->e_logging.store(true);
+    (void)shared->service->configuration();  // no configuration lock is held around a call-out
+    std::lock_guard<std::recursive_mutex> costmap_lock(shared->costmap_mutex);  // the caller's lock
+    std::lock_guard<std::mutex> lock(shared->lines_mutex);
+    shared->lines.push_back(line);
+  };
+  // Owned by the shared state: if a revert deadlocks, the test ends the process with the
+  // threads still holding it.
+  auto service = std::make_shared<PlanningService>(s, sink);
+  shared->service = service.get();
+  configure(*service, unboundedColony());
+  const CostmapSnapshot costmap = openCostmap(40, 40);
+  const PlanRequest r = request(costmap, {1, 1}, {38, 38});
+  auto a = std::async(std::launch::async, [shared, service, costmap, r] {
+    std::lock_guard<std::recursive_mutex> costmap_lock(shared->costmap_mutex);  // move_base's planner thread
+    return service->plan(costmap, r);
+  });
+  while (!shared->a_running.load()) std::this_thread::yield();
+  PlanningService::Configuration limited = unboundedColony();
+  limited.options.max_planning_time = 0.2;
+  configure(*service, limited);
+  auto e = std::async(std::launch::async, [service, costmap, r] { return service->plan(costmap, r); });
+  const auto hangGuard = [](bool ok, const char* what) {
+    if (ok) return;
+    ADD_FAILURE() << what << ": a deadlock between the caller's costmap lock and a lock of ours";
+    std::fflush(stdout);
+    std::_Exit(1);  // the deadlocked threads own the service: nothing can be joined
+  };
+  for (int k = 0; k < 30000 && !shared->e_logging.load(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  hangGuard(shared->e_logging.load(), "the plan waiting for the turn never gave up");
+  auto b = std::async(std::launch::async, [shared, service, costmap, r] {
+    std::lock_guard<std::recursive_mutex> costmap_lock(shared->costmap_mutex);  // waits for A
+    return service->plan(costmap, r);
+  });
+  std::thread d([shared, service, limited] {
+    for (int k = 0; !shared->done.load(); ++k) {
+      PlanningService::Configuration config = limited;
+      config.params.threads = k % 3;
+      config.params.max_iterations = 50;
+      configure(*service, config);
+      (void)service->configuration();
+      service->cancel();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  hangGuard(a.wait_until(deadline) == std::future_status::ready, "plan A (holding the costmap lock)");
+  hangGuard(e.wait_until(deadline) == std::future_status::ready, "plan E (the one that gave up)");
+  hangGuard(b.wait_until(deadline) == std::future_status::ready, "plan B (waiting for the costmap lock)");
+  shared->done = true;
+  d.join();
+  const PlanReply gave_up = e.get();
+  EXPECT_FALSE(gave_up.ok);
+  EXPECT_NE(gave_up.error.find("another plan held the planner"), std::string::npos) << gave_up.error;
+  const PlanReply first = a.get();
+  EXPECT_EQ(first.stopped_by, StopReason::kCancelled);
+  const PlanReply second = b.get();
+  if (second.ok) {
+    EXPECT_EQ(routeDefect(costmap, second.result.path, {1, 1}, {38, 38}), "");
+  } else {
+    EXPECT_FALSE(second.error.empty());
+  }
 }
 
 // A costmap whose origin moves with every update (a rolling window) gets no landmarks, said once.

@@ -101,7 +101,7 @@ class LandmarkCache {
   // holds for a few pointer moves when it ends.
   std::string lastError() const {
     std::lock_guard<std::mutex> lock(state_->mutex);
-    return state_->last_error;
+    return state_->fixed_error != nullptr ? std::string(state_->fixed_error) : state_->last_error;
   }
   // Jobs this cache started, and jobs that stored their landmarks (for measurements and tests).
   int jobsStarted() const { return started_.load(std::memory_order_relaxed); }
@@ -159,8 +159,11 @@ class LandmarkCache {
       unused_ = true;
       started_.fetch_add(1, std::memory_order_relaxed);
       s.last_error.clear();
+      s.fixed_error = nullptr;
     } catch (const std::exception& e) {  // no thread (std::system_error), no memory for the copy
-      s.last_error = std::string("could not start making landmarks: ") + e.what();
+      setError(s, "could not start making landmarks: ", e.what());
+    } catch (...) {
+      setError(s, "could not start making landmarks: an unknown exception", "");
     }
     return nullptr;
   }
@@ -175,6 +178,7 @@ class LandmarkCache {
     std::shared_ptr<const Landmarks> ready;  // under mutex
     std::shared_ptr<Job> job;                // under mutex: the job in flight, whose landmarks are wanted
     std::string last_error;                  // under mutex
+    const char* fixed_error = nullptr;       // under mutex: instead of last_error when its text could not be made
     int finished = 0;                        // under mutex
   };
 
@@ -192,23 +196,53 @@ class LandmarkCache {
     }
   };
 
+  // When the error's text cannot be made (no memory for the string: its handler is where memory
+  // ran out), this fixed one is said instead.
+  static constexpr const char* kErrorWithoutText =
+      "making landmarks failed, and there was no memory left to say why (std::bad_alloc)";
+
+  // `prefix` + `what` as the state's error, or kErrorWithoutText when that cannot be allocated.
+  // Never throws (it runs in catch handlers, also on the job's thread). The caller holds the mutex.
+  static void setError(State& state, const char* prefix, const char* what) noexcept {
+    try {
+      std::string text(prefix);
+      text += what;
+      state.last_error.swap(text);
+      state.fixed_error = nullptr;
+    } catch (...) {
+      state.last_error.clear();
+      state.fixed_error = kErrorWithoutText;
+    }
+  }
+
   // The job's body, on its detached thread: touches only what it owns. Catches everything (an
-  // exception leaving a thread would end the process); a failure leaves the landmarks held as
-  // they were.
+  // exception leaving a thread would end the process), its own error path included: the text of
+  // an error is made without throwing (an allocation failure there gives kErrorWithoutText); a
+  // failure leaves the landmarks held as they were.
   static void run(State& state, const std::shared_ptr<Job>& job, CostGrid floor, std::shared_ptr<const Landmarks> held,
                   int count, const Maker& make) {
     yieldToPlans();
     std::shared_ptr<const Landmarks> made;
     std::string error;
+    const char* fixed_error = nullptr;  // kErrorWithoutText when `error` could not be made
+    const auto describe = [&](const char* prefix, const char* what) noexcept {
+      try {
+        error = prefix;
+        error += what;
+      } catch (...) {
+        error.clear();
+        fixed_error = kErrorWithoutText;
+      }
+    };
     try {
       if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor, &job->cancel);
       held.reset();
       if (!job->cancel.load(std::memory_order_relaxed))
         made = make ? make(floor, count, &job->cancel) : Landmarks::compute(floor, count, &job->cancel);
     } catch (const std::exception& e) {
-      error = std::string("making landmarks failed: ") + e.what();
+      describe("making landmarks failed: ", e.what());
     } catch (...) {
-      error = "making landmarks failed with an unknown exception";
+      describe("making landmarks failed with an unknown exception", "");
     }
     std::shared_ptr<const Landmarks> replaced;  // freed after the lock is released
     std::lock_guard<std::mutex> done(state.mutex);
@@ -220,7 +254,8 @@ class LandmarkCache {
       state.ready = std::move(made);
       ++state.finished;
     }
-    state.last_error = error;
+    state.last_error.swap(error);  // no allocation under the lock
+    state.fixed_error = fixed_error;
   }
 
   // The landmarks are made beside the plans that need them now: on a machine with few cores
