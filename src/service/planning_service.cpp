@@ -32,6 +32,17 @@ std::string sizeOf(const eaci::MapFrame& frame) {
 // buffers (a few tens of bytes a cell) must fit a robot's memory.
 constexpr std::size_t kMaxCostmapCells = eaci::kMaxGridCells;
 
+// The outcome of a plan a stop ended before a route was found.
+PlanOutcome stopOutcome(StopReason reason) {
+  switch (reason) {
+    case StopReason::kTimeLimit: return PlanOutcome::kTimeLimit;
+    case StopReason::kCancelled: return PlanOutcome::kCancelled;
+    case StopReason::kShutdown: return PlanOutcome::kShutdown;
+    case StopReason::kNone: break;
+  }
+  return PlanOutcome::kInternalError;
+}
+
 }  // namespace
 
 const char* toString(StopReason reason) {
@@ -114,6 +125,7 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
     const Configuration config = configuration();
     if (!config.error.empty()) {
       reply.error = config.error + ": refusing to plan until it is fixed";
+      reply.outcome = PlanOutcome::kBadParameters;
       say(LogLevel::kError, reply.error);
       return reply;
     }
@@ -143,6 +155,7 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
       } else if (!turn_free_.wait_until(lock, deadline, free)) {
         lock.unlock();
         reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
+        reply.outcome = PlanOutcome::kTimeLimit;
         say(LogLevel::kWarn, reply.error);
         return reply;
       }
@@ -219,21 +232,22 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     }
     return done;
   };
-  const auto failure = [&](const std::string& why) -> PlanReply {
+  const auto failure = [&](PlanOutcome outcome, const std::string& why) -> PlanReply {
+    reply.outcome = outcome;
     reply.error = why;
     return finish(reply);
   };
 
   const eaci::MapFrame& frame = costmap.frame;
-  if (frame.width <= 0 || frame.height <= 0) return failure("the costmap is empty (" + sizeOf(frame) + ")");
+  if (frame.width <= 0 || frame.height <= 0) return failure(PlanOutcome::kBadCostmap, "the costmap is empty (" + sizeOf(frame) + ")");
   if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
-    return failure("the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
+    return failure(PlanOutcome::kBadCostmap, "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
   const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
   if (cell_count > kMaxCostmapCells)
-    return failure("the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
+    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
                    std::to_string(kMaxCostmapCells) + " cells");
   if (costmap.cells.size() != cell_count)
-    return failure("the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
+    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells.size()) + " cells, not the " + sizeOf(frame) +
                    " it claims");
   if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
     const std::string stood_in = emptied_stand_in_.standIn(costmap, std::chrono::steady_clock::now());
@@ -242,14 +256,18 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   }
 
   const auto start_cell = frame.worldToCell(request.start);
-  if (!start_cell) return failure("start " + where(request.start) + " is off the costmap");
+  if (!start_cell) return failure(PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap");
   const auto goal_cell = frame.worldToCell(request.goal);
-  if (!goal_cell) return failure("goal " + where(request.goal) + " is off the costmap");
+  if (!goal_cell) return failure(PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap");
   eaci::CellInterpretation interpretation =
       eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
   interpretation.unknown_value = kCostmapUnknown;
   const StartCellCheck start_check = openStartCell(costmap, interpretation, *start_cell, should_stop);
-  if (!start_check.ok) return failure("start " + where(request.start) + ": " + start_check.error);
+  if (!start_check.ok)
+    return failure(stop_reason.load() != static_cast<int>(StopReason::kNone)
+                       ? stopOutcome(static_cast<StopReason>(stop_reason.load()))
+                       : PlanOutcome::kStartBlocked,
+                   "start " + where(request.start) + ": " + start_check.error);
   reply.start_cells_opened = start_check.cells_opened;
   if (start_check.cells_opened > 0)
     say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
@@ -264,12 +282,13 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   // start finds the nearest reachable cell (a free cell behind a wall must not win).
   const double radius_cells = tolerance / frame.resolution;
   const auto stopped_while = [&](const std::string& what) {
-    return failure(std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
+    return failure(stopOutcome(static_cast<StopReason>(stop_reason.load())),
+                   std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
   };
   std::optional<eaci::Cell> target = eaci::nearestFreeCell(view, *goal_cell, radius_cells, should_stop);
   if (!target) {
     if (stop_reason.load() != static_cast<int>(StopReason::kNone)) return stopped_while("looking for a free cell near the goal");
-    return failure("goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
+    return failure(PlanOutcome::kGoalBlocked, "goal " + where(request.goal) + " is in an obstacle and no free cell lies within " +
                    eaci::formatNumber(tolerance) + " m of it");
   }
 
@@ -285,7 +304,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
       return stopped_while("looking for a cell near the goal that the start can reach");
     if (!reachable)
-      return failure("goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
+      return failure(PlanOutcome::kNoPath, "goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
                      eaci::formatNumber(tolerance) + " m of it");
     if (!(*reachable == *target)) {  // else the plan failed for another reason: its error stands
       say(LogLevel::kInfo, "no route reaches " + where(frame.cellToWorld(*target)) + ": planning to " +
@@ -298,15 +317,17 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   reportLandmarks(frame);
   if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
   if (!reply.result.success()) {
-    if (!reply.result.interrupted) return failure(reply.result.error);
+    if (!reply.result.interrupted)
+      return failure(reply.result.status == eaci::PlanStatus::kNoPath ? PlanOutcome::kNoPath : PlanOutcome::kInternalError,
+                     reply.result.error);
     if (reply.stopped_by == StopReason::kTimeLimit)
-      return failure("no route found within max_planning_time (" + eaci::formatNumber(options.max_planning_time) + " s)");
-    return failure(std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
+      return failure(PlanOutcome::kTimeLimit, "no route found within max_planning_time (" + eaci::formatNumber(options.max_planning_time) + " s)");
+    return failure(stopOutcome(reply.stopped_by), std::string(toString(reply.stopped_by)) + " after " + std::to_string(reply.result.iterations_run) +
                    " iterations, before a route was found");
   }
   const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target);
   if (!defect.empty())
-    return failure("internal error: the planner's route is not drivable (" + defect + "); no plan");
+    return failure(PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan");
   // The route that goes out is result.smoothed_path: walked through every cell its segments
   // pass; if the smoother got one wrong, the grid route (just checked) goes out instead.
   if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
@@ -324,6 +345,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              (reply.result.route_from_search ? "the cheapest route the islands sit on (no ant had arrived yet)"
                                                              : "the best route so far"));
   reply.ok = true;
+  reply.outcome = PlanOutcome::kOk;
   return finish(reply);
 }
 

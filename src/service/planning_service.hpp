@@ -29,6 +29,7 @@
 #include "costmap_snapshot.hpp"
 #include "eaci/planner.hpp"
 #include "plan_cancellation.hpp"
+#include "plan_outcome.hpp"
 #include "planner_options.hpp"
 #include "replay_writer.hpp"
 
@@ -73,6 +74,9 @@ struct PlanRequest {
 
 struct PlanReply {
   bool ok = false;
+  // Why the plan ended as it did (kOk with ok). Minimal version for the Move Base Flex adapter
+  // (issue #28); branch h-outcomes owns the full one.
+  PlanOutcome outcome = PlanOutcome::kInternalError;
   std::string error;            // one line when !ok
   // The core's result; result.smoothed_path is the route a robot drives (the grid route, `path`,
   // when a smoothed segment failed the last check).
