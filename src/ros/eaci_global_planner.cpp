@@ -2,8 +2,7 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
-#include <mutex>
-#include <stdexcept>
+#include "costmap_2d_copy.hpp"
 
 PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciGlobalPlanner, nav_core::BaseGlobalPlanner)
 
@@ -32,21 +31,7 @@ void EaciGlobalPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* c
   }
 }
 
-// The costmap's lock is recursive: move_base's planner thread already holds it around makePlan.
-CostmapSnapshot EaciGlobalPlanner::copyCostmap() const {
-  if (costmap_ros_ == nullptr) throw std::runtime_error("no costmap");
-  costmap_2d::Costmap2D* costmap = costmap_ros_->getCostmap();
-  CostmapSnapshot copy;
-  copy.frame_id = costmap_ros_->getGlobalFrameID();
-  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
-  copy.frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
-  copy.frame.resolution = costmap->getResolution();
-  copy.frame.width = static_cast<int>(costmap->getSizeInCellsX());
-  copy.frame.height = static_cast<int>(costmap->getSizeInCellsY());
-  const unsigned char* cells = costmap->getCharMap();
-  copy.cells.assign(cells, cells + std::size_t{costmap->getSizeInCellsX()} * costmap->getSizeInCellsY());
-  return copy;
-}
+CostmapSnapshot EaciGlobalPlanner::copyCostmap() const { return copyCostmap2D(costmap_ros_); }
 
 bool EaciGlobalPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                  std::vector<geometry_msgs::PoseStamped>& plan) {

@@ -3,6 +3,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 
+#include <cstdio>
 #include <utility>
 
 #include "grid_conversion.hpp"
@@ -72,46 +73,54 @@ RosPlanner::~RosPlanner() {
   if (service_) service_->cancel();
 }
 
-bool RosPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-                          double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                                    double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
   plan.clear();
   try {
     CostmapSnapshot costmap;
     try {
       costmap = setup_.costmap();
     } catch (const std::exception& e) {
-      ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(PlanOutcome::kBadCostmap), e.what());
-      return false;
+      Answer answer;
+      answer.outcome = PlanOutcome::kBadCostmap;
+      answer.message = e.what();
+      ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(answer.outcome), e.what());
+      return answer;
     }
     for (const auto* pose : {&start, &goal}) {
       if (pose->header.frame_id != costmap.frame_id) {
-        ROS_ERROR("%s: no plan (%s): the %s is in frame '%s', the costmap in '%s'", setup_.who.c_str(),
-                  toName(pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap),
-                  pose == &start ? "start" : "goal", pose->header.frame_id.c_str(), costmap.frame_id.c_str());
-        return false;
+        Answer answer;
+        answer.outcome = pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap;
+        answer.wrong_frame = true;
+        answer.message = std::string("the ") + (pose == &start ? "start" : "goal") + " is in frame '" +
+                         pose->header.frame_id + "', the costmap in '" + costmap.frame_id + "'";
+        ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(answer.outcome), answer.message.c_str());
+        return answer;
       }
     }
     return planOn(std::move(costmap), start, goal, tolerance, plan, false);
   } catch (const std::exception& e) {
-    failedWith(e.what(), plan);
+    return failedWith(e.what(), plan);
   } catch (...) {
-    failedWith("an unknown exception", plan);
+    return failedWith("an unknown exception", plan);
   }
-  return false;
 }
 
-bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start,
-                        const geometry_msgs::PoseStamped& goal, double tolerance,
-                        std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
+RosPlanner::Answer RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start,
+                                      const geometry_msgs::PoseStamped& goal, double tolerance,
+                                      std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
   PlanRequest request;
   request.start = {start.pose.position.x, start.pose.position.y};
   request.goal = {goal.pose.position.x, goal.pose.position.y};
   request.tolerance = tolerance;
   request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
   const PlanReply reply = service_->plan(std::move(costmap), request);
+  Answer answer;
+  answer.outcome = reply.outcome;
   if (!reply.ok()) {
     logFailure(setup_.who, from_service ? "make_plan: " : "", reply);
-    return false;
+    answer.message = reply.error;
+    return answer;
   }
   geometry_msgs::PoseStamped target = goal;
   target.pose.position.x = reply.goal.x();
@@ -122,15 +131,25 @@ bool RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStampe
   plan = path.poses;
   if (reply.options.publish_plan) plan_pub_.publish(path);
   if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
-  return true;
+  answer.cost = reply.result.cost;
+  char line[192];
+  std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s",
+                reply.result.smoothed_length * reply.frame.resolution, plan.size(), reply.result.cost,
+                reply.result.iterations_run, reply.stopped_by == StopReason::kNone ? "" : ", the best so far: ",
+                reply.stopped_by == StopReason::kNone ? "" : toString(reply.stopped_by));
+  answer.message = line;
+  return answer;
 }
 
-void RosPlanner::failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+RosPlanner::Answer RosPlanner::failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
   plan.clear();
+  Answer answer;
   try {
+    answer.message = what;
     ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(PlanOutcome::kInternalError), what);
   } catch (...) {
   }
+  return answer;
 }
 
 bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {

@@ -49,21 +49,37 @@ class RosPlanner {
   RosPlanner(const ros::NodeHandle& private_nh, Setup setup);
   ~RosPlanner();
 
-  // Plans from `start` to `goal` (poses in the costmap's frame). false with a log line naming
-  // the outcome (toName(PlanOutcome)) and the reason; `plan` empty then. tolerance < 0:
+  // What a plan came to, for an adapter that reports more than yes or no (Move Base Flex).
+  struct Answer {
+    PlanOutcome outcome = PlanOutcome::kInternalError;
+    // A pose was not in the costmap's frame: no plan was tried (outcome kStartOffMap or kGoalOffMap).
+    bool wrong_frame = false;
+    // kOk: the route's cost as the planner minimised it (result.cost: the sum of its move costs,
+    // a straight free step costs 1); 0 otherwise.
+    double cost = 0.0;
+    std::string message;  // the service's sentence: why it failed, or what was found
+  };
+
+  // Plans from `start` to `goal` (poses in the costmap's frame). On failure a log line names the
+  // outcome (toName(PlanOutcome)) and the reason, and `plan` is empty. tolerance < 0:
   // default_tolerance. Never throws.
+  Answer plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal, double tolerance,
+              std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
+  // plan(), as yes or no (the move_base plugin).
   bool makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal, double tolerance,
-                std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
+                std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+    return this->plan(start, goal, tolerance, plan).outcome == PlanOutcome::kOk;
+  }
 
   // The options in force (the node inflates its map with them).
   RosPlannerOptions options() const { return config_->options(); }
 
  private:
-  // Plans on `costmap` (poses already in its frame), publishes; false when the service said no
-  // (logged with the outcome; `from_service`: for ~make_plan).
-  bool planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-              double tolerance, std::vector<geometry_msgs::PoseStamped>& plan, bool from_service);
-  void failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
+  // Plans on `costmap` (poses already in its frame), publishes when the service found a route;
+  // a failure is logged with its outcome (`from_service`: for ~make_plan).
+  Answer planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                double tolerance, std::vector<geometry_msgs::PoseStamped>& plan, bool from_service);
+  Answer failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   bool onSaveCostmap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
