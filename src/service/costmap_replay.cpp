@@ -25,8 +25,9 @@ std::string xy(const Eigen::Vector2d& p) { return eaci::exactNumber(p.x()) + ","
 
 }  // namespace
 
-std::string describeOutcome(bool ok, const std::string& error, const eaci::PlanResult& result, double resolution) {
-  if (!ok) return "failed: " + error;
+std::string describeOutcome(PlanOutcome outcome, const std::string& error, const eaci::PlanResult& result,
+                            double resolution) {
+  if (outcome != PlanOutcome::kOk) return std::string("failed (") + toName(outcome) + "): " + error;
   return "route: cost " + eaci::formatNumber(result.cost, 6) + ", length " + eaci::formatNumber(result.length, 6) +
          " cells (" + eaci::formatNumber(result.length * resolution, 4) + " m), " + std::to_string(result.path.size()) +
          " cells, smoothed length " + eaci::formatNumber(result.smoothed_length, 6) + " cells";

@@ -13,6 +13,7 @@
 #include "eaci/planner/parameters.hpp"
 #include "eaci/planner.hpp"
 #include "costmap_snapshot.hpp"
+#include "plan_outcome.hpp"
 
 namespace eaci_service {
 
@@ -21,11 +22,12 @@ struct PlanRecord {
   Eigen::Vector2d start = Eigen::Vector2d::Zero();  // m
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();   // m
   double tolerance = 0.0;                           // m
-  std::string outcome;  // "route: cost ..., length ..." or "failed: <reason>"
+  std::string outcome;  // "route: cost ..., length ..." or "failed (<outcome word>): <reason>"
 };
 
 // The summary of a plan's outcome that PlanRecord::outcome holds.
-std::string describeOutcome(bool ok, const std::string& error, const eaci::PlanResult& result, double resolution);
+std::string describeOutcome(PlanOutcome outcome, const std::string& error, const eaci::PlanResult& result,
+                            double resolution);
 
 struct ReplayFiles {
   std::string map_yaml;     // the raw map: <directory>/<base_name>.yaml ...

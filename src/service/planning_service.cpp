@@ -224,8 +224,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   record.goal = request.goal;
   record.tolerance = tolerance;
   const auto finish = [&](PlanReply& done) -> PlanReply& {
-    record.outcome = describeOutcome(done.ok(), std::string(toName(done.outcome)) + ": " + done.error, done.result,
-                                     costmap.frame.resolution);
+    record.outcome = describeOutcome(done.outcome, done.error, done.result, costmap.frame.resolution);
     {
       std::lock_guard<std::mutex> lock(last_plan_mutex_);
       last_plan_ = record;
