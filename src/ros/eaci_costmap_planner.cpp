@@ -52,7 +52,7 @@ uint32_t EaciCostmapPlanner::makePlan(const geometry_msgs::PoseStamped& start, c
 
 bool EaciCostmapPlanner::cancel() {
   if (!planner_) return false;
-  const bool stopping = planner_->service().cancel();
+  const bool stopping = planner_->cancel();
   ROS_INFO("EaciCostmapPlanner: cancel: %s", stopping ? "stopping the plan in progress" : "no plan in progress");
   return true;
 }

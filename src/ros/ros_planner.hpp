@@ -71,6 +71,9 @@ class RosPlanner {
     return this->plan(start, goal, tolerance, plan).outcome == PlanOutcome::kOk;
   }
 
+  // Asks the plan in progress to stop (PlanningService::cancel); false when none runs.
+  bool cancel() noexcept { return service_ && service_->cancel(); }
+
   // The options in force (the node inflates its map with them).
   RosPlannerOptions options() const { return config_->options(); }
 

@@ -572,7 +572,7 @@ TEST(PlanningServiceThreads, APlanWaitingForTheTurnGivesUpAtItsOwnMaxPlanningTim
   const PlanReply waited = b.get();
   if (b_returned) {
     EXPECT_TRUE(a_was_running);
-    EXPECT_FALSE(waited.ok);
+    EXPECT_FALSE(waited.ok());
     EXPECT_NE(waited.error.find("another plan held the planner for the whole max_planning_time (0.2 s)"),
               std::string::npos)
         << waited.error;
@@ -663,12 +663,12 @@ TEST(PlanningServiceThreads, NoLockOfOursIsHeldWhileTheCallersCostmapLockIsTaken
   shared->done = true;
   d.join();
   const PlanReply gave_up = e.get();
-  EXPECT_FALSE(gave_up.ok);
+  EXPECT_FALSE(gave_up.ok());
   EXPECT_NE(gave_up.error.find("another plan held the planner"), std::string::npos) << gave_up.error;
   const PlanReply first = a.get();
   EXPECT_EQ(first.stopped_by, StopReason::kCancelled);
   const PlanReply second = b.get();
-  if (second.ok) {
+  if (second.ok()) {
     EXPECT_EQ(routeDefect(costmap, second.result.path, {1, 1}, {38, 38}), "");
   } else {
     EXPECT_FALSE(second.error.empty());

@@ -232,14 +232,14 @@ TEST(PlanningServiceMemory, EveryNthAllocationOnALargeCostmapWithLandmarksAndTwo
   const double optimum = octile(to.row - from.row, to.col - from.col);
   const PlanRequest r = request(costmap, from, to);
   const PlanReply reference = service.plan(costmap, r);
-  ASSERT_TRUE(reference.ok) << reference.error;
+  ASSERT_TRUE(reference.ok()) << reference.error;
   ASSERT_EQ(routeDefect(costmap, reference.result.path, from, to), "");
   EXPECT_NEAR(reference.result.cost, optimum, 1e-6);
   for (int k = 0; k < 3000 && made->load() < 1; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_GE(made->load(), 1) << "no landmarks were made: the landmark cache was not reached";
 
   g_allocations = 0;
-  ASSERT_TRUE(service.plan(costmap, r).ok);
+  ASSERT_TRUE(service.plan(costmap, r).ok());
   const long per_plan = g_allocations.load();
   ASSERT_GT(per_plan, 10);
   const long stride = std::max(1L, per_plan / 128);
@@ -250,14 +250,14 @@ TEST(PlanningServiceMemory, EveryNthAllocationOnALargeCostmapWithLandmarksAndTwo
     g_countdown = n;
     const PlanReply reply = service.plan(std::move(copy), r);
     g_countdown = -1;
-    if (reply.ok) {
+    if (reply.ok()) {
       EXPECT_EQ(routeDefect(costmap, reply.result.path, from, to), "") << "allocation " << n;
     } else {
       ++failed;
       if (reply.error.empty()) ADD_FAILURE() << "allocation " << n << ": a failed plan without a reason";
     }
     const PlanReply next = service.plan(costmap, r);
-    ASSERT_TRUE(next.ok) << "allocation " << n << ": the next plan failed: " << next.error;
+    ASSERT_TRUE(next.ok()) << "allocation " << n << ": the next plan failed: " << next.error;
     EXPECT_EQ(routeDefect(costmap, next.result.path, from, to), "") << "allocation " << n;
     EXPECT_NEAR(next.result.cost, optimum, 1e-6) << "allocation " << n;
   }
@@ -350,10 +350,10 @@ TEST(PlanningServiceMemory, APlanWaitingForTheTurnOfAPlanThatThrewStartsOnAFresh
   configure(service, config);
   const CostmapSnapshot costmap = openCostmap(300, 300);
   const PlanRequest r = request(costmap, {10, 10}, {290, 280});
-  ASSERT_TRUE(service.plan(costmap, r).ok);
+  ASSERT_TRUE(service.plan(costmap, r).ok());
   for (int k = 0; k < 3000 && shared->made.load() < 1; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(shared->made.load(), 1) << "the first plan's landmarks were not made (maker called " << shared->entered.load() << " times)";
-  ASSERT_TRUE(service.plan(costmap, r).ok);  // uses them: no new job
+  ASSERT_TRUE(service.plan(costmap, r).ok());  // uses them: no new job
   ASSERT_EQ(shared->entered.load(), 1);
 
   auto x = std::async(std::launch::async, [&] {
@@ -376,10 +376,10 @@ TEST(PlanningServiceMemory, APlanWaitingForTheTurnOfAPlanThatThrewStartsOnAFresh
   ASSERT_EQ(x.wait_for(std::chrono::seconds(60)), std::future_status::ready);
   ASSERT_EQ(y.wait_for(std::chrono::seconds(60)), std::future_status::ready);
   const PlanReply threw = x.get();
-  EXPECT_FALSE(threw.ok);
+  EXPECT_FALSE(threw.ok());
   EXPECT_NE(threw.error.find("a smoother that throws"), std::string::npos) << threw.error;
   const PlanReply after = y.get();
-  ASSERT_TRUE(after.ok) << after.error;
+  ASSERT_TRUE(after.ok()) << after.error;
   EXPECT_EQ(routeDefect(costmap, after.result.path, {10, 10}, {290, 280}), "");
   // Y's fresh workspace starts its own landmark job (asynchronously: waited for, a hang guard).
   for (int k = 0; k < 500 && shared->entered.load() < 2; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
