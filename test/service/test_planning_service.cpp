@@ -434,33 +434,6 @@ TEST(PlanningService, AStopBeforeAnyAntArrivesGivesTheSearchRouteWithGeodesicIsl
 // with the map are stopped inside their loops. (Wall-clock figures for the 0.05 s limit over
 // 50 requests are a benchmark: docs/ros.md.) Here: the plan says the limit stopped it, and it
 // ends long before the unbounded plan could (whose A* alone visits millions of cells).
-// A plan that waits for the planner for its whole max_planning_time (another plan holds it:
-// here one held inside the seam before its route goes out) ends with kTimeLimit, no route.
-TEST(PlanningService, WaitingForTheWholeTimeLimitIsATimeLimitOutcome) {
-  Log log;
-  ServiceSettings s = settings();
-  std::promise<void> entered, release;
-  std::shared_future<void> released = release.get_future().share();
-  std::atomic<bool> first{true};
-  s.smoothed_path_hook = [&](eaci::CellPath&) {
-    if (!first.exchange(false)) return;
-    entered.set_value();
-    released.wait();
-  };
-  PlanningService service(s, log.logger());
-  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
-  config.options.max_planning_time = 0.2;
-  configure(service, config);
-  const CostmapSnapshot costmap = openCostmap(20, 20);
-  auto holder = std::async(std::launch::async, [&] { return service.plan(costmap, request(costmap, {1, 1}, {18, 18})); });
-  entered.get_future().wait();
-  const PlanReply waited = service.plan(costmap, request(costmap, {1, 1}, {18, 18}));
-  release.set_value();
-  EXPECT_EQ(waited.outcome, PlanOutcome::kTimeLimit) << waited.error;
-  EXPECT_TRUE(waited.result.path.empty());
-  EXPECT_EQ(holder.get().outcome, PlanOutcome::kOk);
-}
-
 TEST(PlanningService, AOneMillisecondLimitOnFourMillionCellsIsKept) {
   Log log;
   PlanningService service(settings(), log.logger());
