@@ -3,7 +3,7 @@
 #include <mbf_msgs/GetPathResult.h>
 #include <pluginlib/class_list_macros.hpp>
 
-#include "costmap_2d_copy.hpp"
+#include "costmap_2d_planner.hpp"
 #include "mbf_outcome.hpp"
 
 PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciCostmapPlanner, mbf_costmap_core::CostmapPlanner)
@@ -11,19 +11,7 @@ PLUGINLIB_EXPORT_CLASS(eaci_ros::EaciCostmapPlanner, mbf_costmap_core::CostmapPl
 namespace eaci_ros {
 
 void EaciCostmapPlanner::initialize(std::string name, costmap_2d::Costmap2DROS* costmap_ros) {
-  if (planner_) {
-    ROS_WARN("EaciCostmapPlanner %s: already initialised", name.c_str());
-    return;
-  }
-  try {
-    costmap_ros_ = costmap_ros;
-    planner_ = std::make_unique<RosPlanner>(
-        ros::NodeHandle("~/" + name),
-        RosPlanner::Setup{"EaciCostmapPlanner " + name, false, [this] { return copyCostmap2D(costmap_ros_); }, {}, true});
-  } catch (const std::exception& e) {
-    planner_.reset();
-    ROS_ERROR("EaciCostmapPlanner %s: cannot start: %s (every plan will fail)", name.c_str(), e.what());
-  }
+  startCostmap2DPlanner(planner_, "EaciCostmapPlanner", name, costmap_ros);
 }
 
 uint32_t EaciCostmapPlanner::makePlan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,

@@ -35,7 +35,6 @@ class EaciCostmapPlanner : public mbf_costmap_core::CostmapPlanner {
   bool cancel() override;
 
  private:
-  costmap_2d::Costmap2DROS* costmap_ros_ = nullptr;
   std::unique_ptr<RosPlanner> planner_;
 };
 

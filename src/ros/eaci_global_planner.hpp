@@ -30,9 +30,6 @@ class EaciGlobalPlanner : public nav_core::BaseGlobalPlanner {
                 std::vector<geometry_msgs::PoseStamped>& plan) override;
 
  private:
-  CostmapSnapshot copyCostmap() const;
-
-  costmap_2d::Costmap2DROS* costmap_ros_ = nullptr;
   std::unique_ptr<RosPlanner> planner_;
 };
 

@@ -313,9 +313,13 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
-  reply.result = eaci::plan(view, *start_cell, *target, options.algorithm, params, plan_options);
+  // The planners' grid, made once (the costmap's size was checked above; a cost rule the grid
+  // refuses is a bad parameter): both plans of a goal tolerance and the flood between them search it.
+  if (const std::string invalid = eaci::validationError(params); !invalid.empty())
+    return failure(PlanOutcome::kBadParameters, "invalid parameter: " + invalid);
+  const eaci::CostGrid grid = eaci::CostGrid::fromView(view, params.allow_corner_cutting, eaci::costRule(params));
+  reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
   if (reply.result.status == eaci::PlanStatus::kNoPath && !reply.result.interrupted && radius_cells >= 1) {
-    const eaci::CostGrid grid = eaci::CostGrid::fromView(view, params.allow_corner_cutting);
     const auto reachable = eaci::nearestReachableCell(grid, *start_cell, *goal_cell, radius_cells, should_stop);
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
       return stopped_while("looking for a cell near the goal that the start can reach");
@@ -328,7 +332,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                where(frame.cellToWorld(*reachable)) +
                                ", the cell nearest the goal within the tolerance that the start can reach");
       target = reachable;
-      reply.result = eaci::plan(view, *start_cell, *target, options.algorithm, params, plan_options);
+      reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
     }
   }
   reportLandmarks(frame);
@@ -343,7 +347,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                                          std::to_string(reply.result.iterations_run) +
                                                          " iterations, before a route was found");
   }
-  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target);
+  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target, params.allow_corner_cutting);
   if (!defect.empty())
     return failure(PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan");
   // The route that goes out is result.smoothed_path: walked through every cell its segments

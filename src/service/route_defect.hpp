@@ -11,8 +11,10 @@
 namespace eaci_service {
 
 // "" when `route` runs from `from` to `to` by 8-neighbour moves over cells `view` lets a robot
-// cross, never between two blocked cells that touch at a corner; else what is wrong.
-std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route, eaci::Cell from, eaci::Cell to);
+// cross, diagonal moves past a blocked cell only with `allow_corner_cutting` (the move rule);
+// else what is wrong. drivableRouteDefect on moves of one cell, after a check for jumps.
+std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route, eaci::Cell from, eaci::Cell to,
+                        bool allow_corner_cutting);
 
 // "" when the polyline of cell centres `corners` runs from `from` to `to` and each straight
 // segment between consecutive corners passes only cells `view` lets a robot cross; else which

@@ -13,6 +13,7 @@ namespace {
 
 using eaci::Cell;
 using eaci_service::drivableRouteDefect;
+using eaci_service::routeDefect;
 
 // A costmap_2d-style map of `rows` ('.' free 0, '#' lethal 254, '?' unknown 255), top row
 // first, read with lethal_cost 253 and allow_unknown as given.
@@ -111,6 +112,28 @@ TEST(DrivableRoute, APolylineThatDoesNotJoinStartAndGoalFails) {
   EXPECT_EQ(drivableRouteDefect(map.view(), {}, {0, 0}, {0, 4}, false), "it does not join start and goal");
   EXPECT_EQ(drivableRouteDefect(map.view(), {{0, 0}, {0, 3}}, {0, 0}, {0, 4}, false), "it does not join start and goal");
   EXPECT_EQ(drivableRouteDefect(map.view(), {{0, 1}, {0, 4}}, {0, 0}, {0, 4}, false), "it does not join start and goal");
+}
+
+// The grid route's check: 8-neighbour moves only, and a diagonal move past a blocked cell only
+// when corners may be cut (the move rule, grid/moves.hpp allowedMoves).
+TEST(GridRoute, MovesAreOneCellAndKeepTheCornerRule) {
+  const Map map({
+      "...",
+      ".#.",
+      "...",
+  });
+  EXPECT_EQ(routeDefect(map.view(), {{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 2}}, {0, 0}, {2, 2}, false), "");
+  EXPECT_EQ(routeDefect(map.view(), {{0, 0}, {0, 2}, {1, 2}, {2, 2}}, {0, 0}, {2, 2}, false), "it jumps at cell 1");
+  EXPECT_EQ(routeDefect(map.view(), {{0, 0}, {0, 0}, {0, 1}}, {0, 0}, {0, 1}, false), "it jumps at cell 1");
+  // (0, 1) to (1, 2) passes the corner between the blocked (1, 1) and the free (0, 2).
+  const eaci::CellPath cut{{0, 0}, {0, 1}, {1, 2}, {2, 2}};
+  EXPECT_EQ(routeDefect(map.view(), cut, {0, 0}, {2, 2}, false),
+            "segment 2 of 3, (row 0, col 1) to (row 1, col 2): it passes a blocked cell's corner between "
+            "(row 0, col 2) and (row 1, col 1)");
+  EXPECT_EQ(routeDefect(map.view(), cut, {0, 0}, {2, 2}, true), "");
+  EXPECT_EQ(routeDefect(map.view(), {{0, 0}, {1, 1}, {2, 2}}, {0, 0}, {2, 2}, true),
+            "segment 1 of 2, (row 0, col 0) to (row 1, col 1): it crosses the blocked cell (row 1, col 1)");
+  EXPECT_EQ(routeDefect(map.view(), {{0, 1}, {0, 2}}, {0, 0}, {0, 2}, false), "it does not join start and goal");
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ class LandmarkCache {
     count_in_use_.store(in_use, std::memory_order_relaxed);
     // The size policy: a new size cancels the job in flight (a flag: no lock, no wait); a table
     // no plan was given by then was wasted.
-    const Shape shape = Shape::of(grid);
+    const GridShape shape = GridShape::of(grid);
     if (!seen_ || !(shape == last_shape_)) {
       if (seen_ && job_) job_->cancel.store(true, std::memory_order_relaxed);
       if (unused_) ++wasted_in_a_row_;
@@ -136,7 +136,7 @@ class LandmarkCache {
     std::unique_lock<std::mutex> lock(state_->mutex, std::try_to_lock);
     if (!lock.owns_lock()) return nullptr;  // a job is storing its landmarks this instant
     State& s = *state_;
-    if (s.ready && !(Shape::of(s.ready->grid()) == shape)) dropped = std::move(s.ready);  // they never hold again
+    if (s.ready && !(GridShape::of(s.ready->grid()) == shape)) dropped = std::move(s.ready);  // they never hold again
     if (s.ready && s.ready->holdsFor(grid)) {
       unused_ = false;
       wasted_in_a_row_ = 0;
@@ -182,37 +182,26 @@ class LandmarkCache {
     int finished = 0;                        // under mutex
   };
 
-  // What Landmarks::sameShape compares, remembered by the size policy.
-  struct Shape {
-    int width = 0, height = 0;
-    bool corner_cutting = false;
-    double neutral_cost = 0.0, cost_factor = 0.0;
-    static Shape of(const CostGrid& g) {
-      return {g.width(), g.height(), g.allowCornerCutting(), g.costRule().neutral_cost, g.costRule().cost_factor};
-    }
-    bool operator==(const Shape& o) const {
-      return width == o.width && height == o.height && corner_cutting == o.corner_cutting &&
-             neutral_cost == o.neutral_cost && cost_factor == o.cost_factor;
-    }
-  };
-
   // When the error's text cannot be made (no memory for the string: its handler is where memory
   // ran out), this fixed one is said instead.
   static constexpr const char* kErrorWithoutText =
       "making landmarks failed, and there was no memory left to say why (std::bad_alloc)";
 
-  // `prefix` + `what` as the state's error, or kErrorWithoutText when that cannot be allocated.
-  // Never throws (it runs in catch handlers, also on the job's thread). The caller holds the mutex.
-  static void setError(State& state, const char* prefix, const char* what) noexcept {
+  // `prefix` + `what` into `text`, and null; or `text` empty and kErrorWithoutText when that
+  // cannot be allocated. Never throws (it runs in catch handlers, also on the job's thread).
+  static const char* errorText(std::string& text, const char* prefix, const char* what) noexcept {
     try {
-      std::string text(prefix);
+      text = prefix;
       text += what;
-      state.last_error.swap(text);
-      state.fixed_error = nullptr;
+      return nullptr;
     } catch (...) {
-      state.last_error.clear();
-      state.fixed_error = kErrorWithoutText;
+      text.clear();
+      return kErrorWithoutText;
     }
+  }
+  // The same as the state's error; the caller holds the mutex.
+  static void setError(State& state, const char* prefix, const char* what) noexcept {
+    state.fixed_error = errorText(state.last_error, prefix, what);
   }
 
   // The job's body, on its detached thread: touches only what it owns. Catches everything (an
@@ -225,24 +214,15 @@ class LandmarkCache {
     std::shared_ptr<const Landmarks> made;
     std::string error;
     const char* fixed_error = nullptr;  // kErrorWithoutText when `error` could not be made
-    const auto describe = [&](const char* prefix, const char* what) noexcept {
-      try {
-        error = prefix;
-        error += what;
-      } catch (...) {
-        error.clear();
-        fixed_error = kErrorWithoutText;
-      }
-    };
     try {
       if (held && Landmarks::sameShape(held->grid(), floor)) cheapestOf(held->grid(), floor, &job->cancel);
       held.reset();
       if (!job->cancel.load(std::memory_order_relaxed))
         made = make ? make(floor, count, &job->cancel) : Landmarks::compute(floor, count, &job->cancel);
     } catch (const std::exception& e) {
-      describe("making landmarks failed: ", e.what());
+      fixed_error = errorText(error, "making landmarks failed: ", e.what());
     } catch (...) {
-      describe("making landmarks failed with an unknown exception", "");
+      fixed_error = errorText(error, "making landmarks failed with an unknown exception", "");
     }
     std::shared_ptr<const Landmarks> replaced;  // freed after the lock is released
     std::lock_guard<std::mutex> done(state.mutex);
@@ -270,15 +250,12 @@ class LandmarkCache {
   // Each cell of `into` at most as costly as in `other` (an obstacle is the costliest); stops
   // early (leaving `into` part made) once `cancel` is true, asked every kCancelPollCells cells.
   static void cheapestOf(const CostGrid& other, CostGrid& into, const std::atomic<bool>* cancel) {
-    const std::size_t cells = into.cellCount();
-    for (std::size_t begin = 0; begin < cells; begin += kCancelPollCells) {
-      if (landmarksCancelled(cancel)) return;
-      const std::size_t end = std::min(cells, begin + kCancelPollCells);
+    forCellChunks(into.cellCount(), cancel, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::uint8_t was = other.cellBytes()[i];
         if (was < into.cellBytes()[i]) into.setCost(into.cellAt(i), was);  // `was` is a cost, not an obstacle
       }
-    }
+    });
   }
 
   const int count_;
@@ -291,7 +268,7 @@ class LandmarkCache {
   // The plan's (usableFor, one plan at a time): the job it started last, to cancel; the size policy.
   std::shared_ptr<Job> job_;
   bool seen_ = false;
-  Shape last_shape_;
+  GridShape last_shape_;
   int asks_in_a_row_ = 0;    // on last_shape_, counted up to max_settle_asks_
   bool unused_ = false;      // a table was started and no plan has been given one since
   int wasted_in_a_row_ = 0;  // tables started that no plan was given before the size changed

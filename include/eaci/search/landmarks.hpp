@@ -53,6 +53,30 @@ constexpr std::size_t kCancelPollCells = std::size_t{1} << 16;
 inline bool landmarksCancelled(const std::atomic<bool>* cancel) {
   return cancel != nullptr && cancel->load(std::memory_order_relaxed);
 }
+// Calls `chunk(begin, end)` over the cells [0, cells) in pieces of kCancelPollCells, asking
+// `cancel` before each piece: false, the rest not done, once it is set.
+template <class Chunk>
+bool forCellChunks(std::size_t cells, const std::atomic<bool>* cancel, Chunk&& chunk) {
+  for (std::size_t begin = 0; begin < cells; begin += kCancelPollCells) {
+    if (landmarksCancelled(cancel)) return false;
+    chunk(begin, std::min(cells, begin + kCancelPollCells));
+  }
+  return true;
+}
+
+// What landmarks depend on besides the cells' costs: a grid's size, move rule and cost rule.
+struct GridShape {
+  int width = 0, height = 0;
+  bool corner_cutting = false;
+  double neutral_cost = 0.0, cost_factor = 0.0;
+  static GridShape of(const CostGrid& g) {
+    return {g.width(), g.height(), g.allowCornerCutting(), g.costRule().neutral_cost, g.costRule().cost_factor};
+  }
+  bool operator==(const GridShape& o) const {
+    return width == o.width && height == o.height && corner_cutting == o.corner_cutting &&
+           neutral_cost == o.neutral_cost && cost_factor == o.cost_factor;
+  }
+};
 
 class Landmarks {
  public:
@@ -68,11 +92,10 @@ class Landmarks {
     const std::size_t cells_in_grid = grid.cellCount();
     const std::uint8_t* cells = grid.cellBytes();
     std::size_t free_count = 0;
-    for (std::size_t begin = 0; begin < cells_in_grid; begin += kCancelPollCells) {
-      if (landmarksCancelled(cancel)) return nullptr;
-      const std::size_t end = std::min(cells_in_grid, begin + kCancelPollCells);
-      for (std::size_t i = begin; i < end; ++i) free_count += cells[i] != CostGrid::kObstacle;
-    }
+    if (!forCellChunks(cells_in_grid, cancel, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i) free_count += cells[i] != CostGrid::kObstacle;
+        }))
+      return nullptr;
     if (free_count == 0) return nullptr;
     std::size_t seed = 0;
     for (std::size_t i = 0, seen = 0; i < cells_in_grid; ++i) {
@@ -94,16 +117,16 @@ class Landmarks {
     double largest = 0.0;
     for (int k = 0; k < count; ++k) {
       if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
-      for (std::size_t begin = 0; begin < cells_in_grid; begin += kCancelPollCells) {
-        if (landmarksCancelled(cancel)) return nullptr;
-        const std::size_t end = std::min(cells_in_grid, begin + kCancelPollCells);
-        for (std::size_t i = begin; i < end; ++i) {
-          if (!std::isfinite(distance[i])) continue;
-          landmarks->distance_[i * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)] = static_cast<float>(distance[i]);
-          largest = std::max(largest, distance[i]);
-          nearest_landmark[i] = std::min(nearest_landmark[i], distance[i]);
-        }
-      }
+      if (!forCellChunks(cells_in_grid, cancel, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+              if (!std::isfinite(distance[i])) continue;
+              landmarks->distance_[i * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)] =
+                  static_cast<float>(distance[i]);
+              largest = std::max(largest, distance[i]);
+              nearest_landmark[i] = std::min(nearest_landmark[i], distance[i]);
+            }
+          }))
+        return nullptr;
       if (!farthest(nearest_landmark, seed, cancel)) return nullptr;
     }
     // As floats, each distance is off by at most largest x 2^-24, and so is the difference of
@@ -124,10 +147,7 @@ class Landmarks {
   int count() const { return count_; }
 
   // Grids of the same size, move rule and cost rule: their cells can be compared one by one.
-  static bool sameShape(const CostGrid& a, const CostGrid& b) {
-    return a.width() == b.width() && a.height() == b.height() && a.allowCornerCutting() == b.allowCornerCutting() &&
-           a.costRule().neutral_cost == b.costRule().neutral_cost && a.costRule().cost_factor == b.costRule().cost_factor;
-  }
+  static bool sameShape(const CostGrid& a, const CostGrid& b) { return GridShape::of(a) == GridShape::of(b); }
 
   // True when the bounds hold on `grid`: the same shape, and no cell cheaper than on the grid
   // they were made on (or free where it was an obstacle).
@@ -173,12 +193,11 @@ class Landmarks {
   // unreached; false when cancelled.
   static bool symmetricCosts(const CostGrid& grid, std::size_t source, std::vector<double>& distance,
                              detail::BucketQueue& open, const std::atomic<bool>* cancel) {
-    for (std::size_t begin = 0; begin < distance.size(); begin += kCancelPollCells) {
-      if (landmarksCancelled(cancel)) return false;
-      const std::size_t end = std::min(distance.size(), begin + kCancelPollCells);
-      std::fill(distance.begin() + static_cast<std::ptrdiff_t>(begin), distance.begin() + static_cast<std::ptrdiff_t>(end),
-                std::numeric_limits<double>::infinity());
-    }
+    if (!forCellChunks(distance.size(), cancel, [&](std::size_t begin, std::size_t end) {
+          std::fill(distance.begin() + static_cast<std::ptrdiff_t>(begin),
+                    distance.begin() + static_cast<std::ptrdiff_t>(end), std::numeric_limits<double>::infinity());
+        }))
+      return false;
     distance[source] = 0.0;
     open.clear();
     open.push(0.0, detail::BucketEntry{0.0, static_cast<std::uint32_t>(source)});
@@ -204,13 +223,10 @@ class Landmarks {
   // Sets `best` (in: the fallback) to the reached cell of largest `distance` (the lowest index
   // on ties), unchanged if none; false when cancelled.
   static bool farthest(const std::vector<double>& distance, std::size_t& best, const std::atomic<bool>* cancel) {
-    for (std::size_t begin = 0; begin < distance.size(); begin += kCancelPollCells) {
-      if (landmarksCancelled(cancel)) return false;
-      const std::size_t end = std::min(distance.size(), begin + kCancelPollCells);
+    return forCellChunks(distance.size(), cancel, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
         if (std::isfinite(distance[i]) && distance[i] > distance[best]) best = i;
-    }
-    return true;
+    });
   }
 
   CostGrid floor_;               // the grid the distances were computed on
