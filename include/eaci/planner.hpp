@@ -2,8 +2,10 @@
 // Checks every input and turns each problem into a status and a one-line reason.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -106,6 +108,14 @@ struct PlanOptions {
   PlannerWorkspace* workspace = nullptr;
 };
 
+// Where a plan's time went, in milliseconds (steady clock): for profiles (the planning
+// service's PlanReply::phases), never for decisions.
+struct PlanTimes {
+  double search = 0.0;     // the exact search; for the colonies, all their set-up (flood, islands, region, pheromone)
+  double colony = 0.0;     // the colony's iterations
+  double smoothing = 0.0;  // smoothing the route
+};
+
 struct PlanResult {
   PlanStatus status = PlanStatus::kInvalidParameters;
   std::string error;               // one line, empty on success
@@ -135,6 +145,7 @@ struct PlanResult {
   std::vector<double> best_cost_so_far;     // the best of this and every earlier iteration
   std::vector<Cell> islands;       // EACI: S, islands, E; ACO and A*: S, E
   std::vector<double> pheromone;   // per cell, row-major, if requested
+  PlanTimes times;
 
   bool success() const { return status == PlanStatus::kSuccess; }
 };
@@ -239,6 +250,11 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     return r;
   }
   StopPoll poll(options.should_stop, 0);  // this thread's: A*, the flood, smoothing
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point from) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - from).count();
+  };
+  const Clock::time_point solve_start = Clock::now();
   if (algorithm == Algorithm::kAStar) {
     GridSearchWorkspace own_workspace;
     GridSearchWorkspace& workspace = options.workspace ? options.workspace->astar : own_workspace;
@@ -246,6 +262,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     r.path = cheapest.path;
     r.islands = {start, goal};
     r.interrupted = cheapest.stopped;
+    r.times.search = since(solve_start);
   } else {
     const auto unreachable = [&] {
       return failure(algorithm, PlanStatus::kNoPath,
@@ -266,11 +283,20 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     GridSearchWorkspace* astar_workspace = options.workspace ? &options.workspace->astar : nullptr;
     MeetingSearch* meeting_search = options.workspace ? &options.workspace->meeting : nullptr;
     ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
+    // The set-up ends where the colony shows its initial field (iteration 0).
+    std::optional<Clock::time_point> setup_done;
+    const IterationObserver observer = [&](int iteration, const PheromoneField& field, const ColonyRegion& region) {
+      if (iteration == 0) setup_done = Clock::now();
+      if (options.observer) options.observer(iteration, field, region);
+    };
     ColonyResult colony = algorithm == Algorithm::kEaci
-                              ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
+                              ? solveEaci(grid, start, goal, params, options.should_stop, observer,
                                           astar_workspace, meeting_search, colony_workspace)
-                              : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer,
+                              : solveClassicAco(grid, start, goal, params, options.should_stop, observer,
                                                 colony_workspace);
+    r.times.search = setup_done ? std::chrono::duration<double, std::milli>(*setup_done - solve_start).count()
+                                : since(solve_start);
+    r.times.colony = setup_done ? since(*setup_done) : 0.0;
     if (colony.goal_unreachable) return unreachable();
     if (colony.region_too_large) {
       std::ostringstream e;
@@ -279,7 +305,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
         << " MiB (lower region_margin)";
       return failure(algorithm, PlanStatus::kInvalidParameters, e.str());
     }
+    const PlanTimes times = r.times;
     detail::fillFromColony(grid, colony, options, r);
+    r.times = times;
     if (colony_workspace) {  // their memory serves the next plan
       colony_workspace->region = std::move(colony.region);
       colony_workspace->pheromone = std::move(colony.pheromone);
@@ -311,7 +339,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   r.cost = routeCost(grid, r.path);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
+  const Clock::time_point smoothing_start = Clock::now();
   r.smoothed_path = params.smooth_path ? smoothRoute(grid, r.path, &poll) : r.path;
+  r.times.smoothing = since(smoothing_start);
   r.interrupted = r.interrupted || poll.stopped();
   r.smoothed_length = pathLength(r.smoothed_path);
   return r;

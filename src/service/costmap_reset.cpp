@@ -7,11 +7,11 @@
 
 namespace eaci_service {
 
-bool isUniform(const CostmapSnapshot& costmap) {
-  const std::vector<std::uint8_t>& cells = costmap.cells;
-  if (cells.empty()) return false;
+bool isUniform(const CostmapView& costmap) {
+  const std::size_t cells = costmap.cellCount();
+  if (cells == 0 || costmap.cells == nullptr) return false;
   // Each cell equal to the next: one pass, ended by the first difference.
-  return std::memcmp(cells.data(), cells.data() + 1, cells.size() - 1) == 0;
+  return std::memcmp(costmap.cells, costmap.cells + 1, cells - 1) == 0;
 }
 
 std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eaci::MapFrame& frame, std::uint8_t fill) {
@@ -44,23 +44,24 @@ std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eac
   return placed;
 }
 
-std::string EmptiedCostmapStandIn::standIn(CostmapSnapshot& costmap, Clock::time_point now) {
+std::optional<CostmapSnapshot> EmptiedCostmapStandIn::standIn(const CostmapView& costmap,
+                                                              const CostmapSnapshot* last_filled,
+                                                              Clock::time_point now, std::string& said) {
   if (!isUniform(costmap)) {
     emptied_since_.reset();
-    kept_ = costmap;  // a copy: the plan may change its own (the robot's cell opened)
-    return "";
+    return std::nullopt;
   }
-  if (!kept_) return "";
+  if (last_filled == nullptr) return std::nullopt;
   if (!emptied_since_) emptied_since_ = now;
-  if (now - *emptied_since_ > max_wait_) return "";
-  std::optional<CostmapSnapshot> placed = placedInto(*kept_, costmap.frame, costmap.cells.front());
-  if (!placed) return "";
-  const int value = costmap.cells.front();
+  if (now - *emptied_since_ > max_wait_) return std::nullopt;
+  const std::uint8_t value = costmap.cells[0];
+  std::optional<CostmapSnapshot> placed = placedInto(*last_filled, costmap.frame, value);
+  if (!placed) return std::nullopt;
   placed->frame_id = costmap.frame_id;
-  costmap = std::move(*placed);
-  return "the costmap (" + std::to_string(costmap.frame.width) + " x " + std::to_string(costmap.frame.height) +
+  said = "the costmap (" + std::to_string(costmap.frame.width) + " x " + std::to_string(costmap.frame.height) +
          " cells) holds " + std::to_string(value) + " in every cell: costmap_2d has emptied it (resized or cleared) "
          "and not filled it yet; planning on the last filled costmap, placed into its frame";
+  return placed;
 }
 
 }  // namespace eaci_service

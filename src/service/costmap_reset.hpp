@@ -16,19 +16,22 @@
 #include <string>
 
 #include "costmap_snapshot.hpp"
+#include "costmap_view.hpp"
 
 namespace eaci_service {
 
 // True when every cell holds the same value (and there is at least one cell): what costmap_2d
 // leaves in a costmap it has emptied. Stops at the first cell that differs.
-bool isUniform(const CostmapSnapshot& costmap);
+bool isUniform(const CostmapView& costmap);
+inline bool isUniform(const CostmapSnapshot& costmap) { return isUniform(CostmapView::of(costmap)); }
 
 // `last` placed into `frame`: each cell of `frame` that a cell of `last` lies on takes that
 // cell's value, every other cell `fill`. Null when the resolutions differ or the origins are not
 // a whole number of cells apart (then nothing of `last` lines up with `frame`'s cells).
 std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eaci::MapFrame& frame, std::uint8_t fill);
 
-// Keeps the last filled costmap of a planner and stands it in for an emptied one.
+// Decides when to plan on the last filled costmap instead of an emptied one. It keeps no copy:
+// the planner's own copy of the last filled costmap (its CostmapMirror) is handed in.
 class EmptiedCostmapStandIn {
  public:
   using Clock = std::chrono::steady_clock;
@@ -36,22 +39,16 @@ class EmptiedCostmapStandIn {
   // emptied: a costmap that stays uniform longer is taken as it is (an empty map is a map).
   explicit EmptiedCostmapStandIn(Clock::duration max_wait) : max_wait_(max_wait) {}
 
-  // Called with each plan's costmap before anything else reads it. A filled costmap is kept (a
-  // copy) and left as it is: "" is returned. An emptied one, while a filled one is kept and the
-  // wait has not run out, is replaced by the kept one placed into its frame, and the sentence
-  // returned says so. Throws std::bad_alloc when the copy does not fit (the plan fails; the kept
-  // costmap stays).
-  std::string standIn(CostmapSnapshot& costmap, Clock::time_point now);
-
-  // Forgets the kept costmap (e.g. the plans go to another map).
-  void forget() {
-    kept_.reset();
-    emptied_since_.reset();
-  }
+  // Called with each plan's costmap before anything else reads it, and the last filled costmap
+  // the planner holds (null: none). For a filled costmap: nothing (plan on it). For an emptied
+  // one, while a filled one is held and the wait has not run out: the held one placed into its
+  // frame, to plan on instead, and `said` (else left alone) says so. Throws std::bad_alloc when
+  // the placed copy does not fit.
+  std::optional<CostmapSnapshot> standIn(const CostmapView& costmap, const CostmapSnapshot* last_filled,
+                                         Clock::time_point now, std::string& said);
 
  private:
   const Clock::duration max_wait_;
-  std::optional<CostmapSnapshot> kept_;
   std::optional<Clock::time_point> emptied_since_;  // the first plan that found the costmap emptied
 };
 

@@ -124,7 +124,19 @@ bool PlanningService::cancel() noexcept {
   }
 }
 
-PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& request) noexcept {
+std::string describePhases(const PlanPhases& p) {
+  const auto ms = [](double v) { return eaci::formatNumber(v, 3); };
+  std::string line = "total " + ms(p.total) + " ms: wait " + ms(p.wait) + ", costmap " + ms(p.costmap) + " (" +
+                     (p.afresh ? "made afresh, " : "") + std::to_string(p.rows_read) + " rows read, " +
+                     std::to_string(p.rows_changed) + " changed), start " + ms(p.start) + ", goal " + ms(p.goal) +
+                     ", search " + ms(p.core.search) + ", colony " + ms(p.core.colony) + ", smoothing " +
+                     ms(p.core.smoothing);
+  if (p.tolerance > 0) line += ", tolerance " + ms(p.tolerance);
+  return line + ", check " + ms(p.check);
+}
+
+PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& request,
+                                const CostmapChanges& changes) noexcept {
   const auto started = std::chrono::steady_clock::now();
   PlanReply reply;
   const auto fail = [&](const std::string& why) noexcept {
@@ -187,7 +199,10 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
       }
     } turn{*this};
     const PlanCancellation::Scope in_progress(cancellation_);
-    reply = planLocked(costmap, request, config, should_stop, stop_reason);
+    const double waited = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    reply = planLocked(costmap, changes, request, config, should_stop, stop_reason);
+    reply.phases.wait = waited;
+    reply.phases.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   } catch (const std::bad_alloc&) {
     fail("out of memory while planning (std::bad_alloc): no plan; the planner's buffers are made afresh for the next one");
   } catch (const std::exception& e) {
@@ -198,9 +213,21 @@ PlanReply PlanningService::plan(CostmapSnapshot costmap, const PlanRequest& requ
   return reply;
 }
 
-PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
+PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapChanges& changes,
+                                      const PlanRequest& request, const Configuration& config,
                                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point phase_start = Clock::now();
+  const auto phaseDone = [&phase_start](double& into) {
+    const Clock::time_point now = Clock::now();
+    into += std::chrono::duration<double, std::milli>(now - phase_start).count();
+    phase_start = now;
+  };
   if (workspace_suspect_ || !workspace_) {
+    mirror_.clear();  // a plan that threw may have left it half made
+    stood_in_.clear();
+    mirror_filled_ = false;
+    mirror_missed_changes_ = false;
     workspace_suspect_ = false;
     // Its destructor joins the colony's and the search's worker threads, which a loaded machine
     // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
@@ -223,6 +250,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
   record.start = request.start;
   record.goal = request.goal;
   record.tolerance = tolerance;
+  const CostmapMirror* planned_on = nullptr;  // the copy the plan read, once made
   const auto finish = [&](PlanReply& done) -> PlanReply& {
     record.outcome = describeOutcome(done.outcome, done.error, done.result, costmap.frame.resolution);
     {
@@ -230,14 +258,14 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
       last_plan_ = record;
     }
     if (!done.ok()) {
-      if (settings_.save_costmap_on_failure && !costmap.cells.empty()) {
+      if (settings_.save_costmap_on_failure && planned_on != nullptr && !planned_on->costmap().cells.empty()) {
         ReplayJob job;
         job.prefix = "eaci_failed_plan";
         job.params = params;
         job.algorithm = options.algorithm;
         job.request = record;
         job.notes = replayNotes("the costmap of a failed plan", config);
-        job.costmap = std::move(costmap);
+        job.costmap = planned_on->costmap();  // as planned on: a start in the band opened
         if (!writer_->submit(std::move(job))) say(LogLevel::kWarn, "could not hand the failed plan's costmap to the writer");
       }
     }
@@ -261,26 +289,50 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) +
                                                  " is larger than the planner's cap of " +
                                                  std::to_string(kMaxCostmapCells) + " cells");
-  if (costmap.cells.size() != cell_count)
-    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells.size()) +
+  if (costmap.cells_held != CostmapView::kUnchecked && costmap.cells_held != cell_count)
+    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells_held) +
                                                  " cells, not the " + sizeOf(frame) + " it claims");
+  if (costmap.cells == nullptr)
+    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) + " came without its cells");
+  if (const std::string invalid = eaci::validationError(params); !invalid.empty())
+    return failure(PlanOutcome::kBadParameters, "invalid parameter: " + invalid);
+  eaci::CellInterpretation interpretation =
+      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
+  interpretation.unknown_value = kCostmapUnknown;
+
+  // The planner's copy of the costmap, brought up to it where it changed; or, for a costmap
+  // costmap_2d has emptied, the last filled one placed into its frame (a copy made afresh).
+  std::optional<CostmapSnapshot> placed;
   if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
-    const std::string stood_in = emptied_stand_in_.standIn(costmap, std::chrono::steady_clock::now());
+    std::string stood_in;
+    placed = emptied_stand_in_.standIn(costmap, mirror_filled_ ? &mirror_.costmap() : nullptr, Clock::now(), stood_in);
     if (!stood_in.empty() && stood_in != emptied_reported_) say(LogLevel::kInfo, stood_in);
     emptied_reported_ = stood_in;
   }
+  CostmapMirror& mirror = placed ? stood_in_ : mirror_;
+  const CostmapMirror::Sync synced =
+      placed ? stood_in_.sync(CostmapView::of(*placed), CostmapChanges::unknown(), interpretation,
+                              params.allow_corner_cutting, eaci::costRule(params))
+             : mirror_.sync(costmap, mirror_missed_changes_ ? CostmapChanges::unknown() : changes, interpretation,
+                            params.allow_corner_cutting, eaci::costRule(params));
+  // A plan on the stand-in leaves mirror_ behind the changes the caller reported: the next sync compares every row.
+  mirror_missed_changes_ = placed.has_value();
+  if (!placed) mirror_filled_ = !isUniform(costmap);
+  planned_on = &mirror;
+  reply.phases.afresh = synced.afresh;
+  reply.phases.rows_read = synced.rows_read;
+  reply.phases.rows_changed = synced.rows_changed;
+  phaseDone(reply.phases.costmap);
 
   const auto start_cell = frame.worldToCell(request.start);
   if (!start_cell) return failure(PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap");
   const auto goal_cell = frame.worldToCell(request.goal);
   if (!goal_cell) return failure(PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap");
-  eaci::CellInterpretation interpretation =
-      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
-  interpretation.unknown_value = kCostmapUnknown;
-  const StartCellCheck start_check = openStartCell(costmap, interpretation, *start_cell, should_stop);
+  const StartCellCheck start_check = openStartCell(mirror.costmap(), interpretation, *start_cell, should_stop);
   if (!start_check.ok)
     return failure(start_check.stopped ? stop_outcome() : start_check.outcome,
                    "start " + where(request.start) + ": " + start_check.error);
+  for (const eaci::Cell& cell : start_check.opened) mirror.open(cell, start_check.opened_cost);  // until the next sync
   reply.start_cells_opened = start_check.cells_opened;
   if (start_check.cells_opened > 0)
     say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
@@ -288,7 +340,8 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                              std::to_string(params.lethal_cost) + "): planning out of it by the cheapest way (" +
                              std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
 
-  const eaci::GridView view(costmap.cells.data(), frame.width, frame.height, costmap.order, interpretation);
+  phaseDone(reply.phases.start);
+  const eaci::GridView view = mirror.view();
   const bool goal_free = view.isFree(*goal_cell);
   // The goal tolerance, as navfn's: the route ends on the cell nearest to the goal, within the
   // tolerance, that the start can reach. First the nearest free cell (the goal itself when it is
@@ -308,17 +361,18 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
                                                   eaci::formatNumber(tolerance) + " m of it");
   }
 
+  phaseDone(reply.phases.goal);
+
   useLandmarksFor(frame, options.landmarks);
   eaci::PlanOptions plan_options;
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
-  // The planners' grid, made once (the costmap's size was checked above; a cost rule the grid
-  // refuses is a bad parameter): both plans of a goal tolerance and the flood between them search it.
-  if (const std::string invalid = eaci::validationError(params); !invalid.empty())
-    return failure(PlanOutcome::kBadParameters, "invalid parameter: " + invalid);
-  const eaci::CostGrid grid = eaci::CostGrid::fromView(view, params.allow_corner_cutting, eaci::costRule(params));
+  // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
+  const eaci::CostGrid& grid = mirror.grid();
   reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
+  reply.phases.core = reply.result.times;
+  phase_start = Clock::now();
   if (reply.result.status == eaci::PlanStatus::kNoPath && !reply.result.interrupted && radius_cells >= 1) {
     const auto reachable = eaci::nearestReachableCell(grid, *start_cell, *goal_cell, radius_cells, should_stop);
     if (stop_reason.load() != static_cast<int>(StopReason::kNone))
@@ -335,6 +389,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
       reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
     }
   }
+  phaseDone(reply.phases.tolerance);
   reportLandmarks(frame);
   if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
   if (!reply.result.success()) {
@@ -360,6 +415,7 @@ PlanReply PlanningService::planLocked(CostmapSnapshot& costmap, const PlanReques
     reply.result.smoothed_path = reply.result.path;
     reply.result.smoothed_length = reply.result.length;
   }
+  phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +

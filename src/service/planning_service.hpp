@@ -7,9 +7,9 @@
 //
 // Locks: plan() takes the planning turn (one plan at a time), configure() and configuration()
 // a short configuration lock, cancel() the cancellation's own. None of them is held while
-// another is taken, none is held while the caller's costmap lock is taken (the caller copies
-// the costmap before it calls), and move_base may hold its costmap lock while it calls plan():
-// so no lock order between ours and the costmap's can close a cycle.
+// another is taken, none is held while the caller's costmap lock is taken (the plugins take the
+// costmap's lock before they call plan(), or copy the costmap before), and plan() takes no
+// costmap lock: the only order is the costmap's, then ours, so no cycle can close.
 #pragma once
 
 #include <Eigen/Core>
@@ -24,9 +24,11 @@
 #include <string>
 #include <vector>
 
+#include "costmap_mirror.hpp"
 #include "costmap_replay.hpp"
 #include "costmap_reset.hpp"
 #include "costmap_snapshot.hpp"
+#include "costmap_view.hpp"
 #include "eaci/planner.hpp"
 #include "plan_cancellation.hpp"
 #include "plan_outcome.hpp"
@@ -74,6 +76,23 @@ struct PlanRequest {
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
 };
 
+// Where a plan's time went, in milliseconds (steady clock), step by step: for profiles
+// (describePhases; the plugins log it at DEBUG), never for decisions.
+struct PlanPhases {
+  double wait = 0.0;       // for the planning turn (another plan in progress)
+  double costmap = 0.0;    // the planner's copy brought up to the costmap (CostmapMirror::sync), or the stand-in
+  bool afresh = false;     //   made anew (first plan, new frame or interpretation)
+  std::size_t rows_read = 0, rows_changed = 0;  //   costmap rows compared or copied, and those that differed
+  double start = 0.0;      // the start's way out of the inflated band
+  double goal = 0.0;       // the free cell nearest the goal
+  eaci::PlanTimes core;    // the search (with the landmarks' check), the colony, smoothing
+  double tolerance = 0.0;  // no route to the goal: the flood for the reachable cell and the second plan
+  double check = 0.0;      // the last check of the grid and the smoothed routes
+  double total = 0.0;      // plan(), entry to return
+};
+// "total 1.234 ms: wait 0.001, costmap 0.002 (12 of 4096 rows read, 3 changed), ..." on one line.
+std::string describePhases(const PlanPhases& phases);
+
 struct PlanReply {
   // Why the plan ended as it did, set on every path (kOk: a route, possibly the best so far
   // when a stop came after one was found: stopped_by says so). Adapters decide from this.
@@ -89,6 +108,7 @@ struct PlanReply {
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
   RosPlannerOptions options;    // the options the plan was made with (orientation_mode, publish_plan, ...)
+  PlanPhases phases;
 };
 
 class PlanningService {
@@ -108,14 +128,23 @@ class PlanningService {
   };
   Configuration configuration() const;
 
-  // Plans on `costmap` (moved in: the service owns and may change the copy, e.g. opening the
-  // robot's cell). Never throws: every failure, an allocation failure included, is a reply
-  // with its outcome (!ok()) and the reason, and the next plan works. A failed plan is not
-  // logged here: the adapter logs the reply's outcome and sentence (the service logs only what
-  // the reply does not carry: a start opened, a goal moved, landmarks). Returns within max_planning_time (the
-  // time spent waiting for another plan to finish counts), after ~cancel, or when
-  // settings.shutting_down says so, with the best route so far or a failure.
-  PlanReply plan(CostmapSnapshot costmap, const PlanRequest& request) noexcept;
+  // Plans on `costmap`, borrowed for the call (its cells valid and unchanged until it returns:
+  // the plugin holds the costmap's lock), `changes` what changed in it since the previous plan
+  // as far as the caller knows. The service reads only what changed into its own copy
+  // (CostmapMirror), which it may change (opening the robot's way out of the band). Never
+  // throws: every failure, an allocation failure included, is a reply with its outcome (!ok())
+  // and the reason, and the next plan works. A failed plan is not logged here: the adapter logs
+  // the reply's outcome and sentence (the service logs only what the reply does not carry: a
+  // start opened, a goal moved, landmarks). Returns within max_planning_time (the time spent
+  // waiting for another plan to finish counts), after ~cancel, or when settings.shutting_down
+  // says so, with the best route so far or a failure.
+  PlanReply plan(const CostmapView& costmap, const PlanRequest& request,
+                 const CostmapChanges& changes = CostmapChanges::unknown()) noexcept;
+  // The same on a copy (the planner node's maps, the ~make_plan service): nothing is known of
+  // what changed, so every row is compared with the service's copy.
+  PlanReply plan(const CostmapSnapshot& costmap, const PlanRequest& request) noexcept {
+    return plan(CostmapView::of(costmap), request);
+  }
 
   // Asks the plan in progress to stop with the best route so far; false when none runs.
   bool cancel() noexcept;
@@ -125,8 +154,9 @@ class PlanningService {
   std::string saveCostmap(CostmapSnapshot costmap, ReplayFiles& files) noexcept;
 
  private:
-  PlanReply planLocked(CostmapSnapshot& costmap, const PlanRequest& request, const Configuration& config,
-                       const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason);
+  PlanReply planLocked(const CostmapView& costmap, const CostmapChanges& changes, const PlanRequest& request,
+                       const Configuration& config, const std::function<bool()>& should_stop,
+                       const std::atomic<int>& stop_reason);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,
@@ -155,6 +185,10 @@ class PlanningService {
   int moves_in_a_row_ = 0;                    // the plan's
   bool rolling_ = false;                      // the plan's
   EmptiedCostmapStandIn emptied_stand_in_;    // the plan's
+  CostmapMirror mirror_;                      // the plan's: the costmap as of the last plan
+  bool mirror_filled_ = false;                // the plan's: mirror_ holds a filled (not uniform) costmap
+  bool mirror_missed_changes_ = false;        // the plan's: the last plan did not sync mirror_ (it stood in)
+  CostmapMirror stood_in_;                    // the plan's: the last filled costmap placed into an emptied one's frame
   std::string emptied_reported_;              // the plan's: the stand-in's sentence last said
   int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)
   std::string landmark_error_reported_;       // the plan's

@@ -11,7 +11,7 @@
 
 namespace eaci_service {
 
-StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpretation& interpretation,
+StartCellCheck openStartCell(const CostmapSnapshot& costmap, const eaci::CellInterpretation& interpretation,
                              eaci::Cell start, const std::function<bool()>& should_stop) {
   StartCellCheck check;
   const int width = costmap.frame.width, height = costmap.frame.height;
@@ -81,11 +81,9 @@ StartCellCheck openStartCell(CostmapSnapshot& costmap, const eaci::CellInterpret
     return check;
   }
   // lethal_cost - 1: the costliest cost a planner still crosses.
-  const std::uint8_t passable = static_cast<std::uint8_t>(std::max(0, int(interpretation.lethal_cost) - 1));
-  for (Index i = labels[exit].parent; i != kNoParent; i = labels[i].parent) {
-    costmap.cells[costmap.bufferIndex(cellOf(i))] = passable;
-    ++check.cells_opened;
-  }
+  check.opened_cost = static_cast<std::uint8_t>(std::max(0, int(interpretation.lethal_cost) - 1));
+  for (Index i = labels[exit].parent; i != kNoParent; i = labels[i].parent) check.opened.push_back(cellOf(i));
+  check.cells_opened = static_cast<int>(check.opened.size());
   check.ok = true;
   return check;
 }

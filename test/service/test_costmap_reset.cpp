@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include "costmap_reset.hpp"
@@ -81,34 +82,32 @@ TEST(CostmapReset, NothingLinesUpAcrossResolutionsOrFractionalShifts) {
 TEST(CostmapReset, AnEmptiedCostmapIsPlannedOnAsTheLastFilledOneShowedIt) {
   EmptiedCostmapStandIn stand_in(std::chrono::seconds(3));
   const Clock::time_point t0{};
-  CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
-  EXPECT_EQ(stand_in.standIn(filled, t0), "");
-  EXPECT_EQ(filled.cells, costmapOf({{0, 254}, {0, 0}}).cells);  // a filled costmap is left as it is
+  const CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
+  std::string said;
+  EXPECT_FALSE(stand_in.standIn(CostmapView::of(filled), &filled, t0, said));  // a filled costmap is planned on
+  EXPECT_EQ(said, "");
 
   // Resized to 3 x 2 (one column more on the right) and emptied to unknown.
-  CostmapSnapshot emptied = uniform(3, 2, 255);
-  const std::string said = stand_in.standIn(emptied, t0 + std::chrono::seconds(1));
+  const CostmapSnapshot emptied = uniform(3, 2, 255);
+  const auto placed = stand_in.standIn(CostmapView::of(emptied), &filled, t0 + std::chrono::seconds(1), said);
+  ASSERT_TRUE(placed);
   EXPECT_NE(said.find("holds 255 in every cell"), std::string::npos) << said;
-  EXPECT_EQ(emptied.frame.width, 3);
-  EXPECT_EQ(emptied.cells, costmapOf({{0, 254, 255}, {0, 0, 255}}).cells);
+  EXPECT_EQ(placed->frame.width, 3);
+  EXPECT_EQ(placed->cells, costmapOf({{0, 254, 255}, {0, 0, 255}}).cells);
 }
 
 TEST(CostmapReset, AnEmptyMapIsPlannedOnAsItIsWhenNothingWasFilledOrTheWaitRanOut) {
   EmptiedCostmapStandIn stand_in(std::chrono::seconds(3));
   const Clock::time_point t0{};
-  CostmapSnapshot first = uniform(2, 2, 0);
-  EXPECT_EQ(stand_in.standIn(first, t0), "");  // nothing filled was ever seen
-  EXPECT_EQ(first.cells, uniform(2, 2, 0).cells);
+  std::string said;
+  const CostmapSnapshot empty = uniform(2, 2, 0);
+  EXPECT_FALSE(stand_in.standIn(CostmapView::of(empty), nullptr, t0, said));  // nothing filled was ever seen
 
-  CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
-  stand_in.standIn(filled, t0);
-  CostmapSnapshot emptied = uniform(2, 2, 0);
-  EXPECT_NE(stand_in.standIn(emptied, t0 + std::chrono::seconds(1)), "");   // the wait starts here
-  emptied = uniform(2, 2, 0);
-  EXPECT_NE(stand_in.standIn(emptied, t0 + std::chrono::seconds(4)), "");   // 3 s after the first
-  emptied = uniform(2, 2, 0);
-  EXPECT_EQ(stand_in.standIn(emptied, t0 + std::chrono::milliseconds(4001)), "");  // past 3 s: as it is
-  EXPECT_EQ(emptied.cells, uniform(2, 2, 0).cells);
+  const CostmapSnapshot filled = costmapOf({{0, 254}, {0, 0}});
+  EXPECT_FALSE(stand_in.standIn(CostmapView::of(filled), &filled, t0, said));
+  EXPECT_TRUE(stand_in.standIn(CostmapView::of(empty), &filled, t0 + std::chrono::seconds(1), said));  // the wait starts here
+  EXPECT_TRUE(stand_in.standIn(CostmapView::of(empty), &filled, t0 + std::chrono::seconds(4), said));  // 3 s after the first
+  EXPECT_FALSE(stand_in.standIn(CostmapView::of(empty), &filled, t0 + std::chrono::milliseconds(4001), said));  // past 3 s
 }
 
 // Through the service, as move_base's planner sees a SLAM map grow: a plan on a 10 x 5 costmap

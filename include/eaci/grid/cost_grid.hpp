@@ -1,11 +1,15 @@
 // The grid the planners search: per cell an obstacle or a cost 0..254, the move rule, and
 // the cost of a move.
 //
-// Built once per plan from a GridView (the only copy a plan makes of the map: one byte per
-// cell, next to eight pheromone values per cell).
+// Built from a GridView, once per plan (the CLI, the benchmarks) or once per costmap and then
+// brought up to date where it changed (the planning service's CostmapMirror): each row carries
+// the number of its last change, so what was computed from a grid (landmarks) can be checked
+// again where the grid changed only.
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -51,28 +55,91 @@ class CostGrid {
   CostGrid() = default;
   // Throws std::invalid_argument for a negative size and std::length_error for one of more
   // than kMaxGridCells cells (eaci::plan refuses those maps before it makes a grid).
-  CostGrid(int width, int height, bool allow_corner_cutting, CostRule rule = {})
-      : width_(width), height_(height), allow_corner_cutting_(allow_corner_cutting),
-        cells_(checkedCellCount(width, height), 0) {
+  CostGrid(int width, int height, bool allow_corner_cutting, CostRule rule = {}) {
+    reset(width, height, allow_corner_cutting, rule);
+  }
+  // A copy is another grid (its own identity()): what was checked on one is not known of the other.
+  CostGrid(const CostGrid& other) { *this = other; }
+  CostGrid& operator=(const CostGrid& other) {
+    if (this == &other) return *this;
+    width_ = other.width_;
+    height_ = other.height_;
+    allow_corner_cutting_ = other.allow_corner_cutting_;
+    cells_ = other.cells_;
+    rule_ = other.rule_;
+    cell_factor_ = other.cell_factor_;
+    row_changes_ = other.row_changes_;
+    changes_ = other.changes_;
+    identity_ = newIdentity();
+    return *this;
+  }
+  CostGrid(CostGrid&& other) noexcept { *this = std::move(other); }
+  CostGrid& operator=(CostGrid&& other) noexcept {
+    width_ = other.width_;
+    height_ = other.height_;
+    allow_corner_cutting_ = other.allow_corner_cutting_;
+    cells_ = std::move(other.cells_);
+    rule_ = other.rule_;
+    cell_factor_ = other.cell_factor_;
+    row_changes_ = std::move(other.row_changes_);
+    changes_ = other.changes_;
+    identity_ = newIdentity();
+    other.identity_ = newIdentity();
+    return *this;
+  }
+
+  // Makes this grid `width` x `height` free cells of cost 0 anew (a new identity), keeping its
+  // memory when it is large enough. Throws as the constructor; the grid is unchanged then.
+  void reset(int width, int height, bool allow_corner_cutting, CostRule rule = {}) {
+    const std::size_t cells = checkedCellCount(width, height);
     setCostRule(rule);
+    width_ = width;
+    height_ = height;
+    allow_corner_cutting_ = allow_corner_cutting;
+    cells_.assign(cells, 0);
+    row_changes_.assign(static_cast<std::size_t>(height), 0);
+    changes_ = 0;
+    identity_ = newIdentity();
+  }
+
+  // The cell byte (cost 0..254, or kObstacle) of each byte value a view holds: the view's
+  // interpretation once per value, then a table look-up per cell.
+  static std::array<std::uint8_t, 256> cellByteTable(const CellInterpretation& interpretation) {
+    std::array<std::uint8_t, 256> cell_byte{};
+    for (int v = 0; v < 256; ++v) {
+      const auto value = static_cast<std::uint8_t>(v);
+      const std::uint8_t cost = interpretation.cost(value);
+      cell_byte[v] = interpretation.isObstacle(value) ? kObstacle : (cost < kObstacle ? cost : kObstacle - 1);
+    }
+    return cell_byte;
   }
 
   static CostGrid fromView(const GridView& view, bool allow_corner_cutting, CostRule rule = {}) {
     CostGrid grid(view.width(), view.height(), allow_corner_cutting, rule);
-    // The interpretation once per byte value, then a table look-up per cell (a plan converts
-    // the whole costmap: 1.4 million cells on a building map).
-    std::array<std::uint8_t, 256> cell_byte{};
-    for (int v = 0; v < 256; ++v) {
-      const auto value = static_cast<std::uint8_t>(v);
-      const std::uint8_t cost = view.interpretation().cost(value);
-      cell_byte[v] = view.interpretation().isObstacle(value) ? kObstacle : (cost < kObstacle ? cost : kObstacle - 1);
-    }
-    for (int r = 0; r < view.height(); ++r) {
-      const std::uint8_t* from = view.rowBytes(r);
-      std::uint8_t* to = grid.cells_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(view.width());
-      for (int c = 0; c < view.width(); ++c) to[c] = cell_byte[from[c]];
-    }
+    grid.assignRows(view, 0, view.height());
     return grid;
+  }
+
+  // Rows [row_begin, row_end) as `view` (of this grid's size) reads them.
+  void assignRows(const GridView& view, int row_begin, int row_end) {
+    assignRect(view, cellByteTable(view.interpretation()), row_begin, row_end, 0, width_);
+  }
+  // Cells [row_begin, row_end) x [col_begin, col_end) as `view` (of this grid's size) reads
+  // them through `cell_byte` (cellByteTable of its interpretation). Only a row whose cells
+  // changed counts as changed (rowChange). The range must lie on the grid.
+  void assignRect(const GridView& view, const std::array<std::uint8_t, 256>& cell_byte, int row_begin, int row_end,
+                  int col_begin, int col_end) {
+    for (int r = row_begin; r < row_end; ++r) {
+      const std::uint8_t* from = view.rowBytes(r);
+      std::uint8_t* to = cells_.data() + index(Cell{r, 0});
+      std::uint8_t changed = 0;
+      for (int c = col_begin; c < col_end; ++c) {
+        const std::uint8_t now = cell_byte[from[c]];
+        changed |= static_cast<std::uint8_t>(to[c] != now);
+        to[c] = now;
+      }
+      if (changed != 0) markRowChanged(r);
+    }
   }
 
   // Rows of 0 (free) / 1 (obstacle), first row = top. Handy for tests and small maps.
@@ -104,10 +171,23 @@ class CostGrid {
   bool contains(Cell c) const { return c.row >= 0 && c.col >= 0 && c.row < height_ && c.col < width_; }
   bool isBlocked(Cell c) const { return cells_[index(c)] == kObstacle; }
   bool isFree(Cell c) const { return contains(c) && cells_[index(c)] != kObstacle; }
-  void setBlocked(Cell c, bool blocked) { cells_[index(c)] = blocked ? kObstacle : 0; }
+  void setBlocked(Cell c, bool blocked) {
+    cells_[index(c)] = blocked ? kObstacle : 0;
+    markRowChanged(c.row);
+  }
   // The cost 0..254 of a free cell.
   std::uint8_t cost(Cell c) const { return cells_[index(c)]; }
-  void setCost(Cell c, std::uint8_t cost) { cells_[index(c)] = cost < kObstacle ? cost : kObstacle - 1; }
+  void setCost(Cell c, std::uint8_t cost) {
+    cells_[index(c)] = cost < kObstacle ? cost : kObstacle - 1;
+    markRowChanged(c.row);
+  }
+
+  // Which grid this is: a number no other grid of this process has had (a copy, a moved-to or
+  // moved-from grid and a reset() one are other grids).
+  std::uint64_t identity() const { return identity_; }
+  // The number of the last change to row `row` of this grid (0: none since it was made); every
+  // change of a cell raises it above every number the grid gave before.
+  std::uint64_t rowChange(int row) const { return row_changes_[static_cast<std::size_t>(row)]; }
   // Throws std::invalid_argument for a rule that would make a move cost less than its length
   // (neutral_cost not > 0, cost_factor < 0, NaN or infinite values) or cost an infinite
   // amount: the octile and landmark bounds of the searches assume no move costs less than its
@@ -155,6 +235,12 @@ class CostGrid {
   double moveCostInto(std::size_t to_index, int dir) const { return stepLength(dir) * cell_factor_[cells_[to_index]]; }
 
  private:
+  static std::uint64_t newIdentity() {
+    static std::atomic<std::uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+  }
+  void markRowChanged(int row) { row_changes_[static_cast<std::size_t>(row)] = ++changes_; }
+
   static std::size_t checkedCellCount(int width, int height) {
     if (width < 0 || height < 0)
       throw std::invalid_argument("a grid of " + std::to_string(width) + " x " + std::to_string(height) +
@@ -170,6 +256,9 @@ class CostGrid {
   std::vector<std::uint8_t> cells_;  // cost 0..254, or kObstacle
   CostRule rule_{};
   std::array<double, kObstacle> cell_factor_{};  // (neutral + factor x c) / neutral by cost c
+  std::vector<std::uint64_t> row_changes_;       // per row: the number of its last change
+  std::uint64_t changes_ = 0;                    // changes numbered so far
+  std::uint64_t identity_ = newIdentity();
 };
 
 // A route's cost: the sum of its moves' costs (0 for a single cell); +infinity when two

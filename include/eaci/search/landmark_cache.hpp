@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -137,7 +138,7 @@ class LandmarkCache {
     if (!lock.owns_lock()) return nullptr;  // a job is storing its landmarks this instant
     State& s = *state_;
     if (s.ready && !(GridShape::of(s.ready->grid()) == shape)) dropped = std::move(s.ready);  // they never hold again
-    if (s.ready && s.ready->holdsFor(grid)) {
+    if (s.ready && holdsOn(*s.ready, s.finished, grid)) {
       unused_ = false;
       wasted_in_a_row_ = 0;
       return s.ready;
@@ -238,6 +239,32 @@ class LandmarkCache {
     state.fixed_error = fixed_error;
   }
 
+  // Whether `ready` (the landmarks the `finished`-th job stored) hold on `grid`: every row
+  // checked when either is new to the cache, then only the rows `grid` changed since (its
+  // rowChange numbers): on a grid kept from plan to plan and changed in a few rows, a check
+  // costs those rows and one number per row, not a pass over every cell.
+  bool holdsOn(const Landmarks& ready, int finished, const CostGrid& grid) {
+    if (!Landmarks::sameShape(grid, ready.grid())) return false;
+    const auto rows = static_cast<std::size_t>(grid.height());
+    const bool known = checked_job_ == finished && checked_grid_ == grid.identity() && checked_rows_.size() == rows;
+    if (!known) {
+      checked_rows_.assign(rows, 0);
+      cheaper_in_row_.assign(rows, 0);
+      cheaper_rows_ = 0;
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::uint64_t change = grid.rowChange(static_cast<int>(r));
+      if (known && checked_rows_[r] == change) continue;
+      const std::uint8_t cheaper = ready.cheaperRow(grid, static_cast<int>(r)) ? 1 : 0;
+      cheaper_rows_ += static_cast<std::size_t>(cheaper) - static_cast<std::size_t>(cheaper_in_row_[r]);
+      cheaper_in_row_[r] = cheaper;
+      checked_rows_[r] = change;
+    }
+    checked_job_ = finished;
+    checked_grid_ = grid.identity();
+    return cheaper_rows_ == 0;
+  }
+
   // The landmarks are made beside the plans that need them now: on a machine with few cores
   // their thread would take a core from a plan and push it past its time limit, so it runs at
   // the lowest priority (Linux: a thread's own nice value; elsewhere as it is).
@@ -272,6 +299,12 @@ class LandmarkCache {
   int asks_in_a_row_ = 0;    // on last_shape_, counted up to max_settle_asks_
   bool unused_ = false;      // a table was started and no plan has been given one since
   int wasted_in_a_row_ = 0;  // tables started that no plan was given before the size changed
+  // The plan's: what holdsOn knows of the landmarks of job checked_job_ on grid checked_grid_.
+  int checked_job_ = -1;
+  std::uint64_t checked_grid_ = 0;
+  std::vector<std::uint64_t> checked_rows_;  // per row: the rowChange number it was checked at
+  std::vector<std::uint8_t> cheaper_in_row_; // per row: some cell cheaper than the landmarks' grid
+  std::size_t cheaper_rows_ = 0;
 };
 
 }  // namespace eaci

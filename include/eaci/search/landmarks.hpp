@@ -153,15 +153,27 @@ class Landmarks {
   // they were made on (or free where it was an obstacle).
   bool holdsFor(const CostGrid& grid) const {
     if (!sameShape(grid, floor_)) return false;
-    const std::uint8_t* now = grid.cellBytes();
-    const std::uint8_t* then = floor_.cellBytes();
-    std::uint8_t cheaper = 0;  // no early exit: the loop vectorises
-    for (std::size_t i = 0; i < grid.cellCount(); ++i) cheaper |= static_cast<std::uint8_t>(now[i] < then[i]);
-    return cheaper == 0;
+    return !cheaperCells(grid, 0, grid.cellCount());
+  }
+  // Some cell of row `row` of `grid` (of the same shape) is cheaper than on their grid.
+  bool cheaperRow(const CostGrid& grid, int row) const {
+    const std::size_t begin = grid.index(Cell{row, 0});
+    return cheaperCells(grid, begin, begin + static_cast<std::size_t>(grid.width()));
   }
 
   // The grid they were made on.
   const CostGrid& grid() const { return floor_; }
+
+ private:
+  bool cheaperCells(const CostGrid& grid, std::size_t begin, std::size_t end) const {
+    const std::uint8_t* now = grid.cellBytes();
+    const std::uint8_t* then = floor_.cellBytes();
+    std::uint8_t cheaper = 0;  // no early exit: the loop vectorises
+    for (std::size_t i = begin; i < end; ++i) cheaper |= static_cast<std::uint8_t>(now[i] < then[i]);
+    return cheaper != 0;
+  }
+
+ public:
 
   // A lower bound of the cost of every route between two grid cells, either way, from their
   // landmark costs (of()); 0 where no landmark reaches both.

@@ -1,0 +1,112 @@
+#include "costmap_mirror.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace eaci_service {
+namespace {
+
+bool sameInterpretation(const eaci::CellInterpretation& a, const eaci::CellInterpretation& b) {
+  return a.lethal_cost == b.lethal_cost && a.unknown_value == b.unknown_value && a.unknown == b.unknown &&
+         a.graded == b.graded;
+}
+
+}  // namespace
+
+bool CostmapMirror::sameSetting(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
+                                bool allow_corner_cutting, eaci::CostRule rule) const {
+  const eaci::MapFrame& a = copy_.frame;
+  const eaci::MapFrame& b = costmap.frame;
+  return made_ && a.width == b.width && a.height == b.height && a.resolution == b.resolution && a.origin == b.origin &&
+         copy_.order == costmap.order && sameInterpretation(interpretation_, interpretation) &&
+         grid_.allowCornerCutting() == allow_corner_cutting && grid_.costRule().neutral_cost == rule.neutral_cost &&
+         grid_.costRule().cost_factor == rule.cost_factor;
+}
+
+void CostmapMirror::makeAfresh(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
+                               bool allow_corner_cutting, eaci::CostRule rule) {
+  made_ = false;
+  opened_.clear();
+  copy_.frame = costmap.frame;
+  copy_.order = costmap.order;
+  copy_.cells.assign(costmap.cells, costmap.cells + costmap.cellCount());  // keeps its memory when large enough
+  interpretation_ = interpretation;
+  cell_byte_ = eaci::CostGrid::cellByteTable(interpretation);
+  grid_.reset(costmap.frame.width, costmap.frame.height, allow_corner_cutting, rule);
+  grid_.assignRows(view(), 0, costmap.frame.height);
+  made_ = true;
+}
+
+bool CostmapMirror::syncRow(const CostmapView& costmap, int y, int x0, int x1) {
+  const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(costmap.frame.width) +
+                         static_cast<std::size_t>(x0);
+  const std::size_t count = static_cast<std::size_t>(x1 - x0);
+  if (std::memcmp(costmap.cells + at, copy_.cells.data() + at, count) == 0) return false;
+  std::memcpy(copy_.cells.data() + at, costmap.cells + at, count);
+  const int row = copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y;
+  grid_.assignRect(view(), cell_byte_, row, row + 1, x0, x1);
+  return true;
+}
+
+CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const CostmapChanges& changes,
+                                        const eaci::CellInterpretation& interpretation, bool allow_corner_cutting,
+                                        eaci::CostRule rule) {
+  Sync done;
+  copy_.frame_id = costmap.frame_id;
+  if (!sameSetting(costmap, interpretation, allow_corner_cutting, rule)) {
+    try {
+      makeAfresh(costmap, interpretation, allow_corner_cutting, rule);
+    } catch (...) {
+      clear();
+      throw;
+    }
+    done.afresh = true;
+    done.rows_read = done.rows_changed = static_cast<std::size_t>(costmap.frame.height);
+    return done;
+  }
+  restore();
+  const int width = costmap.frame.width, height = costmap.frame.height;
+  if (!changes.known) {
+    for (int y = 0; y < height; ++y) done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
+    done.rows_read = static_cast<std::size_t>(height);
+    return done;
+  }
+  for (const BufferRect& rect : changes.rects) {
+    const int x0 = std::max(0, rect.x0), x1 = std::min(width, rect.x1);
+    const int y0 = std::max(0, rect.y0), y1 = std::min(height, rect.y1);
+    if (x0 >= x1) continue;
+    for (int y = y0; y < y1; ++y) done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
+    done.rows_read += static_cast<std::size_t>(std::max(0, y1 - y0));
+  }
+  return done;
+}
+
+void CostmapMirror::open(eaci::Cell c, std::uint8_t value) {
+  const std::size_t at = copy_.bufferIndex(c);
+  opened_.push_back({at, copy_.cells[at]});
+  copy_.cells[at] = value;
+  const std::uint8_t byte = cell_byte_[value];
+  if (byte == eaci::CostGrid::kObstacle) grid_.setBlocked(c, true);
+  else grid_.setCost(c, byte);
+}
+
+void CostmapMirror::restore() {
+  for (auto it = opened_.rbegin(); it != opened_.rend(); ++it) {
+    copy_.cells[it->buffer_index] = it->value;
+    const int width = copy_.frame.width;
+    const int y = static_cast<int>(it->buffer_index / static_cast<std::size_t>(width));
+    const int row = copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y;
+    const int col = static_cast<int>(it->buffer_index % static_cast<std::size_t>(width));
+    grid_.assignRect(view(), cell_byte_, row, row + 1, col, col + 1);
+  }
+  opened_.clear();
+}
+
+void CostmapMirror::clear() {
+  made_ = false;
+  opened_.clear();
+  copy_ = CostmapSnapshot{};
+  grid_ = eaci::CostGrid{};
+}
+
+}  // namespace eaci_service
