@@ -1,5 +1,6 @@
 // What both planner plugins (move_base's nav_core one and Move Base Flex's) share: the planner
-// they start on a costmap_2d costmap, and the copy of its cells each plan hands the planning service.
+// they start on a costmap_2d costmap, the costmap each plan hands the planning service (its own
+// cells under its lock, with what changed since the last plan), and the copy for ~make_plan.
 #pragma once
 
 #include <costmap_2d/costmap_2d_ros.h>
@@ -8,9 +9,11 @@
 #include <cstddef>
 #include <memory>
 #include <mutex>
+#include <boost/make_shared.hpp>
 #include <stdexcept>
 #include <string>
 
+#include "costmap_change_tracker.hpp"
 #include "costmap_snapshot.hpp"
 #include "ros_planner.hpp"
 
@@ -35,6 +38,42 @@ inline eaci_service::CostmapSnapshot copyCostmap2D(costmap_2d::Costmap2DROS* cos
   return copy;
 }
 
+// Plans on the costmap's own cells: takes its (recursive) lock, which move_base's planner thread
+// and Move Base Flex's with planner_lock_costmap already hold around makePlan, for the plan,
+// and tells the planner what `tracker` saw change (null: nothing known, every row compared).
+inline eaci_service::PlanReply planOnCostmap2D(costmap_2d::Costmap2DROS* costmap_ros, CostmapChangeTracker* tracker,
+                                               const RosPlanner::CostmapPlan& plan) {
+  if (costmap_ros == nullptr) throw std::runtime_error("no costmap");
+  costmap_2d::Costmap2D* costmap = costmap_ros->getCostmap();
+  eaci_service::CostmapView view;
+  view.frame_id = costmap_ros->getGlobalFrameID();
+  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
+  view.frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
+  view.frame.resolution = costmap->getResolution();
+  view.frame.width = static_cast<int>(costmap->getSizeInCellsX());
+  view.frame.height = static_cast<int>(costmap->getSizeInCellsY());
+  view.cells = costmap->getCharMap();
+  view.order = eaci::RowOrder::kBottomFirst;
+  return plan(view, tracker != nullptr ? tracker->take() : eaci_service::CostmapChanges::unknown());
+}
+
+// A CostmapChangeTracker added to `costmap_ros`'s layers (under its lock), or null with the
+// reason said when it cannot be (plans then compare every row).
+inline boost::shared_ptr<CostmapChangeTracker> addChangeTracker(const std::string& who, const std::string& name,
+                                                                 costmap_2d::Costmap2DROS* costmap_ros) {
+  try {
+    costmap_2d::LayeredCostmap* layers = costmap_ros->getLayeredCostmap();
+    auto tracker = boost::make_shared<CostmapChangeTracker>();
+    std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap_ros->getCostmap()->getMutex());
+    tracker->initialize(layers, name + "_change_tracker", nullptr);
+    layers->addPlugin(tracker);
+    return tracker;
+  } catch (const std::exception& e) {
+    ROS_WARN("%s: cannot track the costmap's changes (%s): each plan compares every row of it", who.c_str(), e.what());
+  }
+  return nullptr;
+}
+
 // Starts the planner of the plugin `kind` ("EaciGlobalPlanner", "EaciCostmapPlanner") named
 // `name` into `planner`: parameters, topics and services under ~<name>/, each plan on a copy of
 // `costmap_ros`. A second initialize() is said and ignored. When it cannot start, `planner`
@@ -49,9 +88,18 @@ inline void startCostmap2DPlanner(std::unique_ptr<RosPlanner>& planner, const st
       return;
     }
     try {
-      planner = std::make_unique<RosPlanner>(
-          ros::NodeHandle("~/" + name),
-          RosPlanner::Setup{who, false, [costmap_ros] { return copyCostmap2D(costmap_ros); }, {}, true});
+      if (costmap_ros == nullptr) throw std::runtime_error("no costmap");
+      const ros::NodeHandle private_nh("~/" + name);
+      // ~track_costmap_changes: a layer records where costmap_2d rewrites the costmap, so a plan
+      // reads only that (CostmapChangeTracker); false: every plan compares every row.
+      boost::shared_ptr<CostmapChangeTracker> tracker;
+      if (private_nh.param("track_costmap_changes", true)) tracker = addChangeTracker(who, name, costmap_ros);
+      RosPlanner::Setup setup{who, false, [costmap_ros] { return copyCostmap2D(costmap_ros); },
+                              [costmap_ros, tracker](const RosPlanner::CostmapPlan& plan) {
+                                return planOnCostmap2D(costmap_ros, tracker.get(), plan);
+                              },
+                              {}, true};
+      planner = std::make_unique<RosPlanner>(private_nh, std::move(setup));
     } catch (const std::exception& e) {
       ROS_ERROR("%s: cannot start: %s (every plan will fail)", who.c_str(), e.what());
     }

@@ -1,5 +1,8 @@
 #include "ros_planner.hpp"
 
+#include <chrono>
+#include <optional>
+
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 
@@ -73,32 +76,73 @@ RosPlanner::~RosPlanner() {
   if (service_) service_->cancel();
 }
 
+namespace {
+
+// The answer for a pose not in the costmap's frame (no plan tried), or none.
+std::optional<RosPlanner::Answer> frameRefusal(const std::string& who, const geometry_msgs::PoseStamped& start,
+                                               const geometry_msgs::PoseStamped& goal, const std::string& frame_id) {
+  for (const auto* pose : {&start, &goal}) {
+    if (pose->header.frame_id == frame_id) continue;
+    RosPlanner::Answer answer;
+    answer.outcome = pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap;
+    answer.wrong_frame = true;
+    answer.message = std::string("the ") + (pose == &start ? "start" : "goal") + " is in frame '" +
+                     pose->header.frame_id + "', the costmap in '" + frame_id + "'";
+    ROS_ERROR("%s: no plan (%s): %s", who.c_str(), toName(answer.outcome), answer.message.c_str());
+    return answer;
+  }
+  return std::nullopt;
+}
+
+// How long each step of a plan took, at DEBUG on the logger ros.eaci_planner.profile.
+void logProfile(const std::string& who, const PlanReply& reply, double convert_ms, double publish_ms) {
+  ROS_DEBUG_NAMED("profile", "%s: %s, to nav_msgs/Path %.3f, publishing %.3f", who.c_str(),
+                  describePhases(reply.phases).c_str(), convert_ms, publish_ms);
+}
+
+double msSince(std::chrono::steady_clock::time_point from) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - from).count();
+}
+
+}  // namespace
+
+PlanRequest RosPlanner::requestFor(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                                   double tolerance) const {
+  PlanRequest request;
+  request.start = {start.pose.position.x, start.pose.position.y};
+  request.goal = {goal.pose.position.x, goal.pose.position.y};
+  request.tolerance = tolerance;
+  request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
+  return request;
+}
+
 RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                     double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
   plan.clear();
   try {
-    CostmapSnapshot costmap;
+    const PlanRequest request = requestFor(start, goal, tolerance);
+    std::optional<Answer> refused;
+    PlanReply reply;
     try {
-      costmap = setup_.costmap();
-    } catch (const std::exception& e) {
+      if (setup_.borrow) {
+        reply = setup_.borrow([&](const CostmapView& costmap, const CostmapChanges& changes) {
+          refused = frameRefusal(setup_.who, start, goal, costmap.frame_id);
+          return refused ? PlanReply{} : service_->plan(costmap, request, changes);
+        });
+      } else {
+        const CostmapSnapshot costmap = setup_.costmap();
+        refused = frameRefusal(setup_.who, start, goal, costmap.frame_id);
+        if (!refused) reply = service_->plan(costmap, request);
+      }
+    } catch (const std::runtime_error& e) {  // no costmap (the service itself never throws)
       Answer answer;
       answer.outcome = PlanOutcome::kBadCostmap;
       answer.message = e.what();
       ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(answer.outcome), e.what());
       return answer;
     }
-    for (const auto* pose : {&start, &goal}) {
-      if (pose->header.frame_id != costmap.frame_id) {
-        Answer answer;
-        answer.outcome = pose == &start ? PlanOutcome::kStartOffMap : PlanOutcome::kGoalOffMap;
-        answer.wrong_frame = true;
-        answer.message = std::string("the ") + (pose == &start ? "start" : "goal") + " is in frame '" +
-                         pose->header.frame_id + "', the costmap in '" + costmap.frame_id + "'";
-        ROS_ERROR("%s: no plan (%s): %s", setup_.who.c_str(), toName(answer.outcome), answer.message.c_str());
-        return answer;
-      }
-    }
-    return planOn(std::move(costmap), start, goal, tolerance, plan, false);
+    if (refused) return *refused;
+    return answerFor(reply, start, goal, plan, false);
   } catch (const std::exception& e) {
     return failedWith(e.what(), plan);
   } catch (...) {
@@ -106,22 +150,18 @@ RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, con
   }
 }
 
-RosPlanner::Answer RosPlanner::planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start,
-                                      const geometry_msgs::PoseStamped& goal, double tolerance,
-                                      std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
-  PlanRequest request;
-  request.start = {start.pose.position.x, start.pose.position.y};
-  request.goal = {goal.pose.position.x, goal.pose.position.y};
-  request.tolerance = tolerance;
-  request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
-  const PlanReply reply = service_->plan(std::move(costmap), request);
+RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_msgs::PoseStamped& start,
+                                         const geometry_msgs::PoseStamped& goal,
+                                         std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
   Answer answer;
   answer.outcome = reply.outcome;
   if (!reply.ok()) {
     logFailure(setup_.who, from_service ? "make_plan: " : "", reply);
     answer.message = reply.error;
+    logProfile(setup_.who, reply, 0.0, 0.0);
     return answer;
   }
+  const auto convert_start = std::chrono::steady_clock::now();
   geometry_msgs::PoseStamped target = goal;
   target.pose.position.x = reply.goal.x();
   target.pose.position.y = reply.goal.y();
@@ -129,8 +169,11 @@ RosPlanner::Answer RosPlanner::planOn(CostmapSnapshot costmap, const geometry_ms
   const nav_msgs::Path path =
       toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode);
   plan = path.poses;
+  const double convert_ms = msSince(convert_start);
+  const auto publish_start = std::chrono::steady_clock::now();
   if (reply.options.publish_plan) plan_pub_.publish(path);
   if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
+  logProfile(setup_.who, reply, convert_ms, msSince(publish_start));
   answer.cost = reply.result.cost;
   char line[192];
   std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s",
@@ -177,8 +220,10 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
         return true;
       }
     }
-    // The request's own tolerance when > 0, else default_tolerance.
-    planOn(std::move(costmap), start, goal, request.tolerance > 0 ? request.tolerance : -1.0, response.plan.poses, true);
+    // The request's own tolerance when > 0, else default_tolerance. A copy: the service that
+    // asks holds no costmap lock, and the costmap goes on updating while this plans.
+    const PlanReply reply = service_->plan(costmap, requestFor(start, goal, request.tolerance > 0 ? request.tolerance : -1.0));
+    answerFor(reply, start, goal, response.plan.poses, true);
   } catch (const std::exception& e) {
     failedWith(e.what(), response.plan.poses);
   } catch (...) {

@@ -32,10 +32,18 @@ class RosPlanner {
       std::function<bool(const geometry_msgs::PoseStamped& pose, const std::string& frame,
                          geometry_msgs::PoseStamped& out, std::string& error)>;
 
+  // The plugins: calls `plan` with the costmap itself (its cells, not a copy) and what changed
+  // in it since the last call, under the costmap's own lock, held until `plan` returns (move_base
+  // already holds it around makePlan; it is recursive). Throws std::runtime_error with the
+  // reason when there is no costmap.
+  using CostmapPlan = std::function<PlanReply(const CostmapView& costmap, const CostmapChanges& changes)>;
+  using CostmapBorrow = std::function<PlanReply(const CostmapPlan& plan)>;
+
   struct Setup {
     std::string who;               // starts every log line
     bool latch_plan = false;       // the node latches ~plan
-    CostmapSource costmap;
+    CostmapSource costmap;         // a copy: the node's plans, and ~make_plan and ~save_costmap
+    CostmapBorrow borrow;          // optional: plan() borrows the costmap instead of copying it
     PoseTransform transform;       // optional
     // The costmaps are costmap_2d's (the plugin): plan on one it has emptied (resized or cleared,
     // not yet updated) as the last filled one showed it (ServiceSettings).
@@ -78,10 +86,13 @@ class RosPlanner {
   RosPlannerOptions options() const { return config_->options(); }
 
  private:
-  // Plans on `costmap` (poses already in its frame), publishes when the service found a route;
-  // a failure is logged with its outcome (`from_service`: for ~make_plan).
-  Answer planOn(CostmapSnapshot costmap, const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-                double tolerance, std::vector<geometry_msgs::PoseStamped>& plan, bool from_service);
+  // The reply's route as `plan` (published when asked), or its failure logged with its outcome
+  // (`from_service`: for ~make_plan).
+  Answer answerFor(const PlanReply& reply, const geometry_msgs::PoseStamped& start,
+                   const geometry_msgs::PoseStamped& goal, std::vector<geometry_msgs::PoseStamped>& plan,
+                   bool from_service);
+  PlanRequest requestFor(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                         double tolerance) const;
   Answer failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
