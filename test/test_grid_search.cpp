@@ -15,11 +15,11 @@
 #include <mutex>
 #include <new>
 #include <queue>
+#include <random>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <tuple>
-#include <random>
 #include <utility>
 #include <vector>
 
@@ -473,6 +473,48 @@ TEST(Landmarks, CacheMakesThemInTheBackgroundAndAgainWhenTheMapGetsCheaper) {
   EXPECT_NE(remade, made);
   EXPECT_TRUE(remade->holdsFor(grid));
   EXPECT_TRUE(remade->holdsFor(cheaper));
+}
+
+// A grid kept from plan to plan and changed in place (the planning service's CostmapMirror) is
+// checked again only where it changed (CostGrid::rowChange): after every change the cache's
+// answer agrees with the full check (Landmarks::holdsFor) -- a cell made cheaper anywhere, an
+// obstacle cleared, and the same cell set back.
+TEST(Landmarks, CacheChecksAKeptGridAgainWhereItChanged) {
+  CostGrid grid(40, 30, false);
+  for (int r = 3; r < 27; ++r) grid.setCost(Cell{r, 20}, 150);
+  for (int c = 5; c < 15; ++c) grid.setBlocked(Cell{10, c}, true);
+  int started = 0;  // the first job makes them; later ones never run (the landmarks stay these)
+  eaci::ThreadStarter first_only = [&started](std::function<void()> body) {
+    return started++ == 0 ? std::thread(std::move(body)) : std::thread([] {});
+  };
+  eaci::LandmarkCache cache(2, {}, first_only);
+  const auto made = landmarksOnceMade(cache, grid);
+  ASSERT_NE(made, nullptr);
+  const CostGrid original = grid;
+
+  grid.setCost(Cell{20, 20}, 200);  // costlier: they hold
+  EXPECT_EQ(cache.usableFor(grid), made);
+  grid.setCost(Cell{29, 39}, 0);    // as it was (0): they hold
+  EXPECT_EQ(cache.usableFor(grid), made);
+  grid.setCost(Cell{25, 20}, 149);  // cheaper, far from the last change: they do not
+  EXPECT_EQ(cache.usableFor(grid), nullptr);
+  grid.setCost(Cell{25, 20}, 150);  // back: they hold again
+  EXPECT_EQ(cache.usableFor(grid), made);
+  grid.setBlocked(Cell{10, 7}, false);  // an obstacle cleared: they do not
+  EXPECT_EQ(cache.usableFor(grid), nullptr);
+  grid.setBlocked(Cell{10, 7}, true);
+  EXPECT_EQ(cache.usableFor(grid), made);
+
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> row(0, 29), col(0, 39), cost(0, 254);
+  for (int step = 0; step < 400; ++step) {
+    const Cell cell{row(random), col(random)};
+    const int value = cost(random);
+    if (value == 254) grid.setBlocked(cell, true);
+    else if (value > 230) grid.setCost(cell, original.isBlocked(cell) ? 0 : original.cost(cell));  // often back
+    else grid.setCost(cell, static_cast<std::uint8_t>(value));
+    ASSERT_EQ(cache.usableFor(grid) == made, made->holdsFor(grid)) << "step " << step;
+  }
 }
 
 // A cache destroyed while it makes landmarks on a large map returns at once (it waits for no
