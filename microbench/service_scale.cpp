@@ -11,7 +11,9 @@
 //   build/bin/eaci_service_scale [--benchmark_filter=...] [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <map>
 #include <memory>
 #include <random>
@@ -105,6 +107,30 @@ void BM_ServiceShortRouteUnchanged(benchmark::State& state) { planShortRoute(sta
 void BM_ServiceShortRouteFewChanged(benchmark::State& state) { planShortRoute(state, true, Told::kChanges); }
 void BM_ServiceShortRouteUnchangedUntold(benchmark::State& state) { planShortRoute(state, false, Told::kNothing); }
 void BM_ServiceShortRouteFewChangedUntold(benchmark::State& state) { planShortRoute(state, true, Told::kNothing); }
+
+// A route across the map (corner room to corner room), repeated on the costmap as it is: the
+// plan's work grows with the route here, the part that does not is the map's.
+void BM_ServiceRouteAcross(benchmark::State& state) {
+  const int size = static_cast<int>(state.range(0));
+  const eaci_service::CostmapSnapshot& costmap = costmapOf(size);
+  eaci_service::PlanningService service(eaci_service::ServiceSettings{}, eaci_service::Logger{});
+  service.configure(eaci_service::rosDefaultParameters(), eaci_service::RosPlannerOptions{}, "");
+  eaci_service::PlanRequest request;
+  request.start = costmap.frame.cellToWorld({40, 40});
+  request.goal = costmap.frame.cellToWorld({size - 40, size - 40});
+  eaci_service::PlanReply reply;
+  for (int warm = 0; warm < 50; ++warm) {  // landmarks made in the background, then used
+    reply = service.plan(eaci_service::CostmapView::of(costmap), request, eaci_service::CostmapChanges::none());
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (auto _ : state) {
+    reply = service.plan(eaci_service::CostmapView::of(costmap), request, eaci_service::CostmapChanges::none());
+    if (!reply.ok()) state.SkipWithError(reply.error.c_str());
+  }
+  state.counters["route_cells"] = static_cast<double>(reply.result.path.size());
+  printPhases(size, reply);
+}
+BENCHMARK(BM_ServiceRouteAcross)->Arg(400)->Arg(1200)->Unit(benchmark::kMillisecond);
 
 #define EACI_SIZES ->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_ServiceShortRouteUnchanged) EACI_SIZES;

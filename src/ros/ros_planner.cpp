@@ -94,14 +94,17 @@ std::optional<RosPlanner::Answer> frameRefusal(const std::string& who, const geo
   return std::nullopt;
 }
 
-// How long each step of a plan took, at DEBUG on the logger ros.eaci_planner.profile.
-void logProfile(const std::string& who, const PlanReply& reply, double convert_ms, double publish_ms) {
-  ROS_DEBUG_NAMED("profile", "%s: %s, to nav_msgs/Path %.3f, publishing %.3f", who.c_str(),
-                  describePhases(reply.phases).c_str(), convert_ms, publish_ms);
-}
-
 double msSince(std::chrono::steady_clock::time_point from) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - from).count();
+}
+
+// How long each step of a plan took, at DEBUG on the logger ros.eaci_planner.profile: the
+// service's phases, then the conversion to nav_msgs/Path and publishing, then the whole call
+// from `entered` (the costmap's lock and the copy or borrowing included).
+void logProfile(const std::string& who, const PlanReply& reply, double convert_ms, double publish_ms,
+                std::chrono::steady_clock::time_point entered) {
+  ROS_DEBUG_NAMED("profile", "%s: %s, to nav_msgs/Path %.3f, publishing %.3f; the call %.3f ms", who.c_str(),
+                  describePhases(reply.phases).c_str(), convert_ms, publish_ms, msSince(entered));
 }
 
 }  // namespace
@@ -118,6 +121,7 @@ PlanRequest RosPlanner::requestFor(const geometry_msgs::PoseStamped& start, cons
 
 RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                                     double tolerance, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {
+  const auto entered = std::chrono::steady_clock::now();
   plan.clear();
   try {
     const PlanRequest request = requestFor(start, goal, tolerance);
@@ -142,7 +146,7 @@ RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, con
       return answer;
     }
     if (refused) return *refused;
-    return answerFor(reply, start, goal, plan, false);
+    return answerFor(reply, start, goal, plan, false, entered);
   } catch (const std::exception& e) {
     return failedWith(e.what(), plan);
   } catch (...) {
@@ -152,13 +156,14 @@ RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, con
 
 RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_msgs::PoseStamped& start,
                                          const geometry_msgs::PoseStamped& goal,
-                                         std::vector<geometry_msgs::PoseStamped>& plan, bool from_service) {
+                                         std::vector<geometry_msgs::PoseStamped>& plan, bool from_service,
+                                         std::chrono::steady_clock::time_point entered) {
   Answer answer;
   answer.outcome = reply.outcome;
   if (!reply.ok()) {
     logFailure(setup_.who, from_service ? "make_plan: " : "", reply);
     answer.message = reply.error;
-    logProfile(setup_.who, reply, 0.0, 0.0);
+    logProfile(setup_.who, reply, 0.0, 0.0, entered);
     return answer;
   }
   const auto convert_start = std::chrono::steady_clock::now();
@@ -173,7 +178,7 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   const auto publish_start = std::chrono::steady_clock::now();
   if (reply.options.publish_plan) plan_pub_.publish(path);
   if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
-  logProfile(setup_.who, reply, convert_ms, msSince(publish_start));
+  logProfile(setup_.who, reply, convert_ms, msSince(publish_start), entered);
   answer.cost = reply.result.cost;
   char line[192];
   std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s",
@@ -196,6 +201,7 @@ RosPlanner::Answer RosPlanner::failedWith(const char* what, std::vector<geometry
 }
 
 bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
+  const auto entered = std::chrono::steady_clock::now();
   try {
     CostmapSnapshot costmap;
     try {
@@ -223,7 +229,7 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
     // The request's own tolerance when > 0, else default_tolerance. A copy: the service that
     // asks holds no costmap lock, and the costmap goes on updating while this plans.
     const PlanReply reply = service_->plan(costmap, requestFor(start, goal, request.tolerance > 0 ? request.tolerance : -1.0));
-    answerFor(reply, start, goal, response.plan.poses, true);
+    answerFor(reply, start, goal, response.plan.poses, true, entered);
   } catch (const std::exception& e) {
     failedWith(e.what(), response.plan.poses);
   } catch (...) {

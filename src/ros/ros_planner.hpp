@@ -10,6 +10,7 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -90,7 +91,7 @@ class RosPlanner {
   // (`from_service`: for ~make_plan).
   Answer answerFor(const PlanReply& reply, const geometry_msgs::PoseStamped& start,
                    const geometry_msgs::PoseStamped& goal, std::vector<geometry_msgs::PoseStamped>& plan,
-                   bool from_service);
+                   bool from_service, std::chrono::steady_clock::time_point entered);
   PlanRequest requestFor(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                          double tolerance) const;
   Answer failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
