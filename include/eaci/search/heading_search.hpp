@@ -16,11 +16,8 @@
 // distance by at most its length, and the angle to the goal by at most the turn it makes), so
 // a state's label is final when it settles.
 //
-// Memory (docs/benchmarks.md 10.10): what a search keeps of a settled state is only the
-// heading of the state it was reached from, 4 bits (8 per cell in one 32-bit word, a
-// zero-filled buffer whose pages the system maps only where the search settles a state); cost
-// labels are kept only for the open states (OpenStateLabels, a hash table of the frontier).
-// Whole-map label arrays for 8 states per cell would take 8 x the 11 bytes per cell of A*'s.
+// Memory (docs/benchmarks.md 10.10): 8 bytes per cell the search reaches, and cost labels only
+// for the cells with open states (HeadingLabels, search/heading_labels.hpp).
 #pragma once
 
 #include <algorithm>
@@ -42,12 +39,12 @@
 #include "eaci/search/bucket_queue.hpp"
 #include "eaci/search/neighbourhood.hpp"
 #include "eaci/search/octile.hpp"
-#include "eaci/search/open_state_labels.hpp"
+#include "eaci/search/heading_labels.hpp"
 
 namespace eaci {
 
 // The most cells the heading search takes: 8 states per cell are numbered with 32-bit
-// numbers (cell x 8 + heading), and UINT32_MAX marks "none" (OpenStateLabels::kNoState).
+// numbers on the open list (cell x 8 + heading).
 constexpr std::size_t kMaxHeadingSearchCells = (std::size_t{1} << 29) - 1;
 
 // A cheapest route under the combined objective. `cost`, `length` and `path` as in
@@ -72,45 +69,15 @@ inline int turnStepsAtLeast(int dir, int dr, int dc) {
   return 4;
 }
 
-namespace detail {
-
-// Per cell, 8 settled states as 4 bits each: 0 not settled, else 1 + the heading of the state
-// it was reached from (kFromStart for the start's own moves). Zero-filled by calloc, so the
-// system maps only the pages written to.
-class SettledHeadings {
- public:
-  static constexpr unsigned kFromStart = kDirections;  // the start, which has no heading
-
-  explicit SettledHeadings(std::size_t cells)
-      : words_(static_cast<std::uint32_t*>(std::calloc(cells == 0 ? 1 : cells, sizeof(std::uint32_t)))) {
-    if (!words_) throw std::bad_alloc();
-  }
-  bool has(std::uint32_t cell, int heading) const { return nibble(cell, heading) != 0; }
-  // The heading of the state (cell, heading) was reached from, or kFromStart.
-  unsigned from(std::uint32_t cell, int heading) const { return nibble(cell, heading) - 1; }
-  void settle(std::uint32_t cell, int heading, unsigned from) {
-    words_[cell] |= (from + 1) << (4 * heading);
-  }
-
- private:
-  unsigned nibble(std::uint32_t cell, int heading) const { return (words_[cell] >> (4 * heading)) & 0xFu; }
-  struct Free {
-    void operator()(std::uint32_t* p) const { std::free(p); }
-  };
-  std::unique_ptr<std::uint32_t[], Free> words_;
-};
-
-}  // namespace detail
-
-// The search, with its open list and open labels kept for the next one (the settled states are
-// each search's own, freed at its end). One search at a time.
+// The search, with its open list kept for the next one (its labels are each search's own,
+// freed at its end). One search at a time.
 class HeadingSearch {
  public:
-  // What the last search did: states settled (taken off the open list live) and the most open
-  // labels it held at once.
+  // What the last search did: states settled (taken off the open list live), and the most
+  // cells with open states at once (HeadingLabels' blocks).
   struct Stats {
     std::size_t settled = 0;
-    std::size_t most_open = 0;
+    std::size_t open_blocks = 0;
   };
 
   // A cheapest route from start to goal under the combined objective with `turn_cost` (>= 0,
@@ -130,10 +97,11 @@ class HeadingSearch {
     if (start == goal) {
       route.push_back(start);
     } else {
-      detail::SettledHeadings settled(grid.cellCount());  // freed when the route is read
-      const int goal_heading = search(grid, start, goal, turn_cost, stop, settled, result.stopped);
+      detail::HeadingLabels labels(grid.cellCount());  // freed once the route is read
+      const int goal_heading = search(grid, start, goal, turn_cost, stop, labels, result.stopped);
+      stats_.open_blocks = labels.blocksMade();
       if (goal_heading < 0) return result;
-      route = routeBack(grid, settled, goal, goal_heading);
+      route = routeBack(grid, labels, goal, goal_heading);
     }
     result.found = true;
     result.cost = routeCost(grid, route);
@@ -153,14 +121,13 @@ class HeadingSearch {
 
   // A* over the states; the heading the goal was entered with, or -1 (unreachable, stopped).
   int search(const CostGrid& grid, Cell start, Cell goal, double turn_cost, StopPoll* stop,
-             detail::SettledHeadings& settled, bool& stopped) {
+             detail::HeadingLabels& labels, bool& stopped) {
     StopPoll never;
     StopPoll& poll = stop != nullptr ? *stop : never;
     const CellWindow whole = CellWindow::whole(grid);
     const detail::SearchNeighbourhood around(grid, whole);
     double turn_price[5];  // by 45-degree steps, as combinedRouteCost prices them
     for (int k = 0; k <= 4; ++k) turn_price[k] = turn_cost * static_cast<double>(k) * kTurnStepRadians;
-    labels_.clear();
     open_.clear();
 
     // Labels the states one allowed move from `here` (grid index `index`, entered with
@@ -169,24 +136,26 @@ class HeadingSearch {
       for (unsigned moves = around.movesFrom(here); moves != 0; moves &= moves - 1) {
         const int d = detail::lowestBit(moves);
         const std::uint32_t next = around.slotTowards(index, d);
-        if (settled.has(next, d)) continue;
-        const double turn = heading == detail::SettledHeadings::kFromStart
+        if (labels.settled(next, d)) continue;
+        const double turn = heading == detail::HeadingLabels::kFromStart
                                 ? 0.0
                                 : turn_price[turnSteps(static_cast<int>(heading), d)];
         const double g = cost + grid.moveCostInto(next, d) + turn;
-        const std::uint32_t state = stateOf(next, d);
-        if (!labels_.lower(state, g, static_cast<std::uint8_t>(heading))) continue;
+        if (labels.dominated(next, d, g, turn_price) || !labels.lower(next, d, g, heading)) continue;
         const Cell there = step(here, d);
         const double bound =
             octileDistance(there, goal) + turn_price[turnStepsAtLeast(d, goal.row - there.row, goal.col - there.col)];
-        open_.push({g + bound, g, state});
+        open_.push({g + bound, g, stateOf(next, d)});
       }
     };
+    // Settled, or labelled again since at a lower cost (a settled state has cost +infinity).
     const auto stale = [&](const detail::SearchEntry& e) {
-      return settled.has(e.slot >> 3, static_cast<int>(e.slot & 7u)) || e.cost > labels_.cost(e.slot);
+      const std::uint32_t cell = e.slot >> 3;
+      const int heading = static_cast<int>(e.slot & 7u);
+      return e.cost > labels.cost(cell, heading) || labels.settled(cell, heading);
     };
 
-    reachFrom(static_cast<std::uint32_t>(grid.index(start)), start, detail::SettledHeadings::kFromStart, 0.0);
+    reachFrom(static_cast<std::uint32_t>(grid.index(start)), start, detail::HeadingLabels::kFromStart, 0.0);
     const auto goal_index = static_cast<std::uint32_t>(grid.index(goal));
     detail::SearchEntry top;
     while (open_.pop(top, stale)) {
@@ -195,11 +164,12 @@ class HeadingSearch {
         return -1;
       }
       if (stale(top)) continue;
-      stats_.most_open = std::max(stats_.most_open, labels_.size());
       const std::uint32_t cell = top.slot >> 3;
       const int heading = static_cast<int>(top.slot & 7u);
-      settled.settle(cell, heading, labels_.take(top.slot));
+      const bool dominated = labels.dominated(cell, heading, top.cost, turn_price);
+      labels.settle(cell, heading);
       ++stats_.settled;
+      if (dominated) continue;  // settled, never expanded
       if (cell == goal_index) return heading;
       reachFrom(cell, grid.cellAt(cell), static_cast<unsigned>(heading), top.cost);
     }
@@ -207,14 +177,14 @@ class HeadingSearch {
   }
 
   // The cells from the start to `goal`, entered with `heading`, along the settled states.
-  static CellPath routeBack(const CostGrid& grid, const detail::SettledHeadings& settled, Cell goal, int heading) {
+  static CellPath routeBack(const CostGrid& grid, const detail::HeadingLabels& labels, Cell goal, int heading) {
     CellPath route;
     Cell c = goal;
     for (;;) {
       route.push_back(c);
-      const unsigned from = settled.from(static_cast<std::uint32_t>(grid.index(c)), heading);
+      const unsigned from = labels.settledFrom(static_cast<std::uint32_t>(grid.index(c)), heading);
       c = Cell{c.row - kDirRow[heading], c.col - kDirCol[heading]};
-      if (from == detail::SettledHeadings::kFromStart) break;
+      if (from == detail::HeadingLabels::kFromStart) break;
       heading = static_cast<int>(from);
     }
     route.push_back(c);  // the start
@@ -223,7 +193,6 @@ class HeadingSearch {
   }
 
   alignas(64) detail::OrderedBucketQueue open_;
-  detail::OpenStateLabels labels_;
   Stats stats_;
 };
 
