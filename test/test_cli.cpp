@@ -273,6 +273,31 @@ TEST_F(CliTest, EaciReturnsAConnectedPath) {
     EXPECT_TRUE(j["parameters"].contains(name) && !j["parameters"][name].is_null()) << name;
 }
 
+// --turn-cost: astar minimises cost + turn_cost x turn; the report gives both and the angle.
+TEST_F(CliTest, TurnCostPricesTheCornersOfAStarRoutes) {
+  const std::string map = paperMap("paper-20x20.txt");
+  ASSERT_NO_FATAL_FAILURE(requireMap(map));
+  const std::string args = "--map " + quote(map) + " --start 0,0 --goal 19,19 --algorithm astar --set allow_corner_cutting=true";
+  const auto routeOf = [this](const std::string& arguments) {  // a route, or a failure
+    CliRun r;
+    const json report = runJson(arguments, &r);
+    EXPECT_EQ(r.exit_code, 0) << arguments << "\n" << r.err;
+    return report;
+  };
+  constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+  const json plain = routeOf(args), turning = routeOf(args + " --turn-cost 0.5");
+  EXPECT_EQ(plain["combined_cost"], plain["cost"]);
+  EXPECT_EQ(turning["parameters"]["turn_cost"], 0.5);
+  EXPECT_NEAR(turning["combined_cost"].get<double>(),
+              turning["cost"].get<double>() + 0.5 * turning["total_turn_deg"].get<double>() * kRadiansPerDegree, 1e-9);
+  // Cheaper under the combined objective than the shortest route, which turns more.
+  EXPECT_LT(turning["total_turn_deg"].get<double>(), plain["total_turn_deg"].get<double>());
+  EXPECT_LT(turning["combined_cost"].get<double>(),
+            plain["cost"].get<double>() + 0.5 * plain["total_turn_deg"].get<double>() * kRadiansPerDegree);
+  EXPECT_NE(expectBadInput(args + " --turn-cost -1").find("turn_cost must be a number in [0, 1e6]"), std::string::npos);
+  EXPECT_NE(expectBadInput(args + " --turn-cost nan").find("turn_cost"), std::string::npos);
+}
+
 TEST_F(CliTest, SameSeedSameRoute) {
   const std::string map = paperMap("paper-20x20.txt");
   ASSERT_NO_FATAL_FAILURE(requireMap(map));

@@ -25,6 +25,7 @@ TEST(Parameters, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(p.cost_factor, 3.0);
   EXPECT_EQ(p.lethal_cost, 253);
   EXPECT_FALSE(p.allow_unknown);
+  EXPECT_EQ(p.turn_cost, 0.0);  // no price on turning: routes as before issue #30
   EXPECT_EQ(eaci::validationError(p), "");
 }
 
@@ -62,6 +63,10 @@ TEST(Parameters, EachBadValueGetsItsOwnReason) {
       {[&](auto& p) { p.cost_factor = inf; }, "cost_factor"},
       {[](auto& p) { p.lethal_cost = 0; }, "lethal_cost must be in 1..255"},
       {[](auto& p) { p.lethal_cost = 256; }, "lethal_cost"},
+      {[&](auto& p) { p.turn_cost = nan; }, "turn_cost must be a number in [0, 1e6]"},
+      {[](auto& p) { p.turn_cost = -0.25; }, "turn_cost must be a number in [0, 1e6]"},
+      {[&](auto& p) { p.turn_cost = inf; }, "turn_cost"},
+      {[](auto& p) { p.turn_cost = 2e6; }, "turn_cost"},
   };
   for (const auto& c : cases) {
     eaci::Parameters p;
@@ -91,7 +96,9 @@ TEST(Parameters, SetByName) {
   EXPECT_TRUE(p.smooth_path);
   eaci::setParameter(p, "stop_gap", "0.01");
   EXPECT_DOUBLE_EQ(p.stop_gap, 0.01);
-  EXPECT_EQ(eaci::parameterNames().size(), 24u);
+  eaci::setParameter(p, "turn_cost", "0.5");
+  EXPECT_EQ(p.turn_cost, 0.5);
+  EXPECT_EQ(eaci::parameterNames().size(), 25u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

@@ -18,6 +18,7 @@
 #include "eaci/metrics/path_metrics.hpp"
 #include "eaci/path/smoothing.hpp"
 #include "eaci/search/astar.hpp"
+#include "eaci/search/heading_search.hpp"
 #include "eaci/search/meeting_search.hpp"
 #include "eaci/search/reachability.hpp"
 
@@ -75,7 +76,8 @@ inline const char* toString(PlanStatus status) {
 // The size caps a plan checks (each refusal is kInvalidMap, or kInvalidParameters for a
 // colony's region, with the size and the cap):
 // kMaxGridCells (grid/cost_grid.hpp) on the map, kMaxPheromoneBytes (aco/pheromone_field.hpp)
-// on a colony's cells, on the whole map or on a geodesic colony's region around the route.
+// on a colony's cells, on the whole map or on a geodesic colony's region around the route;
+// kMaxHeadingSearchCells (search/heading_search.hpp) on the map for A* with turn_cost > 0.
 
 // What a caller that plans again and again (the ROS node, the move_base plugin, the benchmarks)
 // keeps from plan to plan: the exact search's buffers (A*, and the cheapest route geodesic
@@ -85,6 +87,7 @@ inline const char* toString(PlanStatus status) {
 // keeps the largest buffers a plan has needed (destroy it to give the memory back).
 struct PlannerWorkspace {
   GridSearchWorkspace astar;    // A*, and the route of geodesic islands on smaller maps
+  HeadingSearch turning;        // A* with turn_cost > 0: its open list and open labels
   MeetingSearch meeting;        // the route of geodesic islands from kTwoSidedSearchCells on, and its landmarks
   ColonyWorkspace colony;
 };
@@ -127,6 +130,9 @@ struct PlanResult {
   double smoothed_length = std::numeric_limits<double>::infinity();  // cells, along smoothed_path
   double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost): L_k
   double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
+  // cost + turn_cost x the route's heading change in radians (combinedRouteCost): the objective
+  // A* minimises when turn_cost > 0; the same as `cost` when turn_cost is 0.
+  double combined_cost = std::numeric_limits<double>::infinity();
   double total_turn_deg = 0.0;
   int iterations_to_converge = 0;  // iteration that first reached the final cost (0 for A*)
   int iterations_run = 0;
@@ -236,6 +242,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
       << kMaxPheromoneBytes / (1 << 20) << " MiB";
     return failure(algorithm, PlanStatus::kInvalidMap, e.str());
   }
+  if (algorithm == Algorithm::kAStar && params.turn_cost > 0 && grid.cellCount() > kMaxHeadingSearchCells) {
+    std::ostringstream e;
+    e << "map of " << grid.width() << " x " << grid.height() << " cells is larger than the heading search's cap of "
+      << kMaxHeadingSearchCells << " cells (A* with turn_cost > 0: 8 states per cell, numbered in 32 bits)";
+    return failure(algorithm, PlanStatus::kInvalidMap, e.str());
+  }
 
   PlanResult r;
   r.algorithm = algorithm;
@@ -244,6 +256,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     r.path = {start};
     r.smoothed_path = r.path;
     r.cost = 0.0;
+    r.combined_cost = 0.0;
     r.length = 0.0;
     r.smoothed_length = 0.0;
     r.islands = {start};
@@ -255,7 +268,15 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     return std::chrono::duration<double, std::milli>(Clock::now() - from).count();
   };
   const Clock::time_point solve_start = Clock::now();
-  if (algorithm == Algorithm::kAStar) {
+  if (algorithm == Algorithm::kAStar && params.turn_cost > 0) {  // the combined objective: (cell, heading) states
+    HeadingSearch own_search;
+    HeadingSearch& search = options.workspace ? options.workspace->turning : own_search;
+    TurningPath cheapest = search.cheapestPath(grid, start, goal, params.turn_cost, &poll);
+    r.path = std::move(cheapest.path);
+    r.islands = {start, goal};
+    r.interrupted = cheapest.stopped;
+    r.times.search = since(solve_start);
+  } else if (algorithm == Algorithm::kAStar) {
     GridSearchWorkspace own_workspace;
     GridSearchWorkspace& workspace = options.workspace ? options.workspace->astar : own_workspace;
     const CheapestPath cheapest = cheapestPath(grid, start, goal, workspace, &poll);
@@ -337,6 +358,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   r.status = PlanStatus::kSuccess;
   r.cost = routeCost(grid, r.path);
+  r.combined_cost = combinedRouteCost(grid, r.path, params.turn_cost);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
   const Clock::time_point smoothing_start = Clock::now();

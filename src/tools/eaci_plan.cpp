@@ -98,6 +98,7 @@ struct Options {
   std::string goal_rc, goal_cell, goal_xy;
   std::string algorithm = "eaci";
   std::string seed;
+  std::string turn_cost;  // = --set turn_cost=...
   std::string params_file;
   std::vector<std::string> sets;
   std::string json_file;
@@ -119,7 +120,8 @@ void applyParameterFile(eaci::Parameters& p, const std::string& file) {
   }
 }
 
-// Paper defaults, then --params, then each --set in order, then --unknown and --seed; validated.
+// Paper defaults, then --params, then each --set in order, then --unknown, --seed and
+// --turn-cost; validated.
 void buildParameters(const Options& o, eaci::Parameters& p) {
   if (!o.params_file.empty()) applyParameterFile(p, o.params_file);
   for (const std::string& assignment : o.sets) {
@@ -141,6 +143,13 @@ void buildParameters(const Options& o, eaci::Parameters& p) {
       eaci::setParameter(p, "seed", o.seed);
     } catch (const eaci::ParameterError& e) {
       throw InputError(std::string("--") + e.what(), eaci::PlanStatus::kInvalidParameters);  // "--seed: 'x' is not an integer"
+    }
+  }
+  if (!o.turn_cost.empty()) {
+    try {
+      eaci::setParameter(p, "turn_cost", o.turn_cost);
+    } catch (const eaci::ParameterError& e) {
+      throw InputError(std::string("--turn-cost: ") + e.what(), eaci::PlanStatus::kInvalidParameters);
     }
   }
   const std::string error = eaci::validationError(p);
@@ -315,6 +324,9 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
   // The route the search found, cell to neighbouring cell, and the one a robot drives.
   s << "grid route:     length " << formatNumber(r.length) << " cells = " << formatNumber(r.length * res)
     << " m, total turn " << formatNumber(r.total_turn_deg, 1) << " deg (" << r.path.size() << " cells, 8-connected)\n";
+  if (context.parameters.turn_cost > 0)
+    s << "combined cost:  " << formatNumber(r.combined_cost) << " = cost " << formatNumber(r.cost) << " + turn_cost "
+      << formatNumber(context.parameters.turn_cost) << " x " << formatNumber(r.total_turn_deg, 1) << " deg in radians\n";
   if (context.parameters.smooth_path)
     s << "smoothed route: length " << formatNumber(r.smoothed_length) << " cells = " << formatNumber(r.smoothed_length * res)
       << " m, total turn " << formatNumber(eaci::totalTurnDegrees(r.smoothed_path), 1) << " deg ("
@@ -363,6 +375,10 @@ int run(int argc, char** argv) {
   app.add_option("--algorithm", o.algorithm, "eaci, aco (classic ant colony) or astar")
       ->check(CLI::IsMember({"eaci", "aco", "astar"}));
   app.add_option("--seed", o.seed, "random seed (overrides --params and --set)");
+  app.add_option("--turn-cost", o.turn_cost,
+                 "the cost of one radian of heading change between consecutive moves, added to a route's cost "
+                 "(= --set turn_cost=..., overrides --params and --set; default 0); astar then finds the cheapest "
+                 "route under cost + turn_cost x turn");
   app.add_option("--params", o.params_file, "flat YAML mapping of parameter names to values");
   app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
       ->allow_extra_args(false);

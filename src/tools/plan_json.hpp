@@ -36,7 +36,7 @@ struct PlanContext {
 // the status's word (eaci::toString(PlanStatus): no_path, stopped, start_off_map, ...).
 std::string outcomeWord(const PlanResult& result, const PlanContext& context);
 
-// The report: success, outcome, error (only when failed), status, algorithm, length, cost, length_m,
+// The report: success, outcome, error (only when failed), status, algorithm, length, cost, combined_cost, length_m,
 // min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
 // iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
 // ants_per_iteration, lost_ants_per_iteration, best_cost_per_iteration, best_cost_so_far (null where

@@ -273,4 +273,13 @@ inline double routeCost(const CostGrid& grid, const CellPath& route) {
   return cost;
 }
 
+// A route's combined cost (issue #30): its cost (routeCost) plus turn_cost x its heading change
+// in radians (routeTurnSteps x kTurnStepRadians); routeCost itself when turn_cost is 0;
+// +infinity when it is not a route.
+inline double combinedRouteCost(const CostGrid& grid, const CellPath& route, double turn_cost) {
+  const double cost = routeCost(grid, route);
+  if (turn_cost == 0.0 || !std::isfinite(cost)) return cost;
+  return cost + turn_cost * static_cast<double>(routeTurnSteps(route)) * kTurnStepRadians;
+}
+
 }  // namespace eaci

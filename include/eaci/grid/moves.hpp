@@ -1,5 +1,5 @@
 // The eight moves of the grid model and their lengths (straight 1, diagonal sqrt 2), and a
-// route's length.
+// route's length and heading change.
 #pragma once
 
 #include <array>
@@ -66,6 +66,24 @@ inline unsigned allowedMoves(unsigned free_neighbours, bool allow_corner_cutting
 inline int turnSteps(int from_dir, int to_dir) {
   const int diff = std::abs(from_dir - to_dir);
   return diff <= 4 ? diff : kDirections - diff;
+}
+
+// The heading change of one 45-degree step, radians: turn_cost (planner/parameters.hpp) prices
+// a turn of k steps at turn_cost x k x kTurnStepRadians.
+constexpr double kTurnStepRadians = 0.78539816339744830962;  // pi / 4
+
+// A route's heading change: the turns between its consecutive moves, summed, in 45-degree steps
+// (the first move turns nothing); -1 when two consecutive cells are not 8-neighbours (not a route).
+inline long long routeTurnSteps(const CellPath& route) {
+  long long steps = 0;
+  int previous = -1;
+  for (std::size_t k = 1; k < route.size(); ++k) {
+    const int dir = directionBetween(route[k - 1], route[k]);
+    if (dir < 0) return -1;
+    if (previous >= 0) steps += turnSteps(previous, dir);
+    previous = dir;
+  }
+  return steps;
 }
 
 }  // namespace eaci

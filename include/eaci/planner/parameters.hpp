@@ -43,6 +43,12 @@ struct Parameters : ColonyParameters {
   // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
   // turns it on.
   bool smooth_path = false;
+  // The price of turning (issue #30): a route's combined cost is its cost (above) plus
+  // turn_cost x its heading change in radians, summed over consecutive moves (a 45-degree
+  // corner adds turn_cost x pi/4; the first move turns nothing). 0 = routes priced by their
+  // cost alone, as before. A* (--algorithm astar) minimises the combined cost whenever
+  // turn_cost > 0 (search/heading_search.hpp); docs/algorithm.md says why radians.
+  double turn_cost = 0.0;
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.
@@ -74,6 +80,9 @@ inline std::string validationError(const Parameters& p) {
   else if (p.early_stop_iterations < 0) e << "early_stop_iterations must be >= 0 (got " << p.early_stop_iterations << ")";
   else if (!finite(p.stop_gap) || p.stop_gap < 0 || p.stop_gap > 10)
     e << "stop_gap must be a fraction in [0, 10], e.g. 0.01 = within 1 % of the cheapest route (got " << p.stop_gap << ")";
+  else if (!finite(p.turn_cost) || p.turn_cost < 0 || p.turn_cost > 1e6)
+    e << "turn_cost must be a number in [0, 1e6], the cost of one radian of heading change between consecutive "
+         "moves, 0 = no price on turning (got " << p.turn_cost << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
 }
@@ -157,6 +166,7 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
         },
         [](const Parameters& p) { return ParameterValue{p.seed}; }}},
       {"threads", fieldAccess("threads", &Parameters::threads)},
+      {"turn_cost", fieldAccess("turn_cost", &Parameters::turn_cost)},
   };
   return table;
 }
