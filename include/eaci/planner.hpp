@@ -1,4 +1,5 @@
-// The one entry point: plan a route on an occupancy grid with EACI, classic ACO or A*.
+// The one entry point: plan a route on an occupancy grid with EACI, classic ACO, MAACO
+// (re-implemented from public descriptions, not the authors' code) or A*.
 // Checks every input and turns each problem into a status and a one-line reason.
 #pragma once
 
@@ -21,12 +22,13 @@
 
 namespace eaci {
 
-enum class Algorithm { kEaci, kAco, kAStar };
+enum class Algorithm { kEaci, kAco, kMaaco, kAStar };
 
 inline const char* toString(Algorithm a) {
   switch (a) {
     case Algorithm::kEaci: return "eaci";
     case Algorithm::kAco: return "aco";
+    case Algorithm::kMaaco: return "maaco";
     case Algorithm::kAStar: return "astar";
   }
   return "?";
@@ -35,6 +37,7 @@ inline const char* toString(Algorithm a) {
 inline bool parseAlgorithm(const std::string& text, Algorithm& out) {
   if (text == "eaci") out = Algorithm::kEaci;
   else if (text == "aco") out = Algorithm::kAco;
+  else if (text == "maaco") out = Algorithm::kMaaco;
   else if (text == "astar") out = Algorithm::kAStar;
   else return false;
   return true;
@@ -215,7 +218,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   // Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) keep
   // pheromone for every cell; geodesic EACI only for its region around the route.
-  const bool whole_map_colony = algorithm == Algorithm::kAco || params.island_strategy == IslandStrategy::kPaper ||
+  const bool whole_map_colony = algorithm == Algorithm::kAco || algorithm == Algorithm::kMaaco ||
+                                params.island_strategy == IslandStrategy::kPaper ||
                                 params.region_margin == 0;
   if (algorithm != Algorithm::kAStar && whole_map_colony &&
       grid.cellCount() > kMaxPheromoneBytes / kPheromoneBytesPerCell) {
@@ -266,11 +270,13 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     GridSearchWorkspace* astar_workspace = options.workspace ? &options.workspace->astar : nullptr;
     MeetingSearch* meeting_search = options.workspace ? &options.workspace->meeting : nullptr;
     ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
-    ColonyResult colony = algorithm == Algorithm::kEaci
-                              ? solveEaci(grid, start, goal, params, options.should_stop, options.observer,
-                                          astar_workspace, meeting_search, colony_workspace)
-                              : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer,
-                                                colony_workspace);
+    ColonyResult colony =
+        algorithm == Algorithm::kEaci
+            ? solveEaci(grid, start, goal, params, options.should_stop, options.observer, astar_workspace,
+                        meeting_search, colony_workspace)
+        : algorithm == Algorithm::kMaaco
+            ? solveMaaco(grid, start, goal, params, options.should_stop, options.observer, colony_workspace)
+            : solveClassicAco(grid, start, goal, params, options.should_stop, options.observer, colony_workspace);
     if (colony.goal_unreachable) return unreachable();
     if (colony.region_too_large) {
       std::ostringstream e;
