@@ -36,7 +36,7 @@ PAPER_COLOR = {"astar": "0.45", "aco": "tab:red", "aco-strong": "tab:orange", "e
                "eaci-geodesic": "tab:green", "maaco": "tab:purple"}
 MAACO_ALT = "maaco-alt "  # the variants that change one of MAACO's open choices (docs/algorithm.md)
 # The baselines the paper compares with whose rules are not public: their rows are quoted, not run.
-NOT_RUN_REASON = "not run here: its rules are not public (docs/algorithm.md)"
+NOT_RUN_REASON = "not run here: its rules are not public, docs/algorithm.md"
 SYMBOL = {"epsilon": "ε", "lambda": "λ", "islands": "N", "kappa": "κ"}
 FIGURE = {"epsilon": "Fig. 11", "lambda": "Fig. 12", "islands": "Fig. 13", "kappa": "Fig. 14"}
 COST_LABEL = {"astar": "A*", "astar-smoothed": "A*, smoothed", "eaci": "EACI", "eaci-smoothed": "EACI, smoothed"}
