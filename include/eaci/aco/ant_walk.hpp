@@ -209,12 +209,23 @@ class AntWalker {
     std::size_t target = 1;
     int previous_dir = -1;
     std::array<std::uint32_t, kDirections> neighbour{};
+    constexpr bool every_open_move = decltype(rules.candidates)::kEveryOpenMove;
     while (target < setup.waypoints.size()) {
       if (stop != nullptr && stop->tick()) return;
       int chosen = -1;
       std::uint32_t chosen_cell = ColonyRegion::kNone;
       const std::uint8_t allowed = region.moves(current);
+      // Eq. 8 numerator tau^alpha * eta^beta, in three passes: the candidates' heuristic
+      // distances (as the open moves are found, when every open move is a candidate), raised
+      // to -beta together, multiplied by their pheromone.
+      int count = 0;
       unsigned open = 0;  // free, untabooed, onto no island but this leg's goal
+      const auto add_candidate = [&](int d, std::uint32_t j) {
+        candidate_dirs_[count] = d;
+        candidate_cells_[count] = j;
+        candidate_weights_[count] = rules.heuristic(setup, route.length, here, j, target, previous_dir, d);
+        ++count;
+      };
       for (int d = 0; d < kDirections; ++d) {
         if (!(allowed & (1u << d))) continue;
         const std::uint32_t j = region.neighbourAlong(current, d);
@@ -226,20 +237,17 @@ class AntWalker {
           break;
         }
         if (waypoint >= 0 && waypoint != static_cast<std::int32_t>(target)) continue;  // another island
-        open |= 1u << d;
-        neighbour[d] = j;
+        if constexpr (every_open_move) {
+          add_candidate(d, j);
+        } else {
+          open |= 1u << d;
+          neighbour[d] = j;
+        }
       }
       if (chosen < 0) {
-        // Eq. 8 numerator tau^alpha * eta^beta, in three passes: the candidates' heuristic
-        // distances, raised to -beta together, multiplied by their pheromone.
-        int count = 0;
-        for (unsigned candidates = rules.candidates(open, here); candidates != 0; candidates &= candidates - 1) {
-          const int d = __builtin_ctz(candidates);
-          candidate_dirs_[count] = d;
-          candidate_cells_[count] = neighbour[d];
-          candidate_weights_[count] = rules.heuristic(setup, route.length, here, neighbour[d], target, previous_dir, d);
-          ++count;
-        }
+        if constexpr (!every_open_move)
+          for (unsigned candidates = rules.candidates(open, here); candidates != 0; candidates &= candidates - 1)
+            add_candidate(__builtin_ctz(candidates), neighbour[__builtin_ctz(candidates)]);
         if (count == 0) return;  // deadlock: a lost ant
         setup.eta_power.applyInPlace(candidate_weights_.data(), count);
         double total = 0.0;

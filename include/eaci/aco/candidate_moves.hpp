@@ -10,6 +10,7 @@ namespace eaci {
 
 // Classic ACO and EACI (Eq. 8): every open move is a candidate.
 struct AllowedMoves {
+  static constexpr bool kEveryOpenMove = true;  // the walk takes them as it finds them
   unsigned operator()(unsigned open, Cell /*here*/) const { return open; }
 };
 
@@ -49,6 +50,7 @@ inline unsigned movesNearestInAngle(unsigned open, int toward, int keep) {
 // here -> E; none left: every open move. kNearest3: the three open moves nearest in angle to
 // here -> E (to the nearest 45 degrees); fewer when fewer are open.
 struct GoalDirectionMoves {
+  static constexpr bool kEveryOpenMove = false;
   bool nearest_three = false;
   Cell goal;
   unsigned start_to_goal = 0xFFu;  // movesNotAgainst(S -> E)
