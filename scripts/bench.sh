@@ -2,7 +2,7 @@
 # Builds eaci_bench (Release, no ROS, into build/bench/), runs the studies into out/bench/ (each
 # appends its records to out/bench/<study>.jsonl), then writes docs/benchmarks.md's tables and
 # docs/figures/ from the records with scripts/bench_report.py.
-#   paper    - the paper's Tables 1-3 on its maps, 20 seeds                      (about 10 s)
+#   paper    - the paper's Tables 1-3 on its maps, 20 seeds, MAACO and its choices (about 40 s)
 #   sweep    - Figs 11-14 parameter studies and classic ACO's rho/tau0           (about 2 min)
 #   scale    - generated maps 50..800 cells, time, memory, gap to A*             (several min)
 #   deadline - 800 x 800 maps, wall time against max_planning_time              (about 1 min)

@@ -30,9 +30,13 @@ INF = math.inf
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STUDIES = ["paper", "sweep", "scale", "deadline", "costs", "scen"]
 PAPER_LABEL = {"astar": "A*", "aco": "classic ACO", "aco-strong": "classic ACO, τ0 = 1, ρ = 0.3",
-               "eaci-paper": "EACI, paper islands", "eaci-geodesic": "EACI, geodesic islands"}
+               "eaci-paper": "EACI, paper islands", "eaci-geodesic": "EACI, geodesic islands",
+               "maaco": "MAACO (re-implemented from public descriptions, not the authors' code)"}
 PAPER_COLOR = {"astar": "0.45", "aco": "tab:red", "aco-strong": "tab:orange", "eaci-paper": "tab:blue",
-               "eaci-geodesic": "tab:green"}
+               "eaci-geodesic": "tab:green", "maaco": "tab:purple"}
+MAACO_ALT = "maaco-alt "  # the variants that change one of MAACO's open choices (docs/algorithm.md)
+# The baselines the paper compares with whose rules are not public: their rows are quoted, not run.
+NOT_RUN_REASON = "not run here: its rules are not public, docs/algorithm.md"
 SYMBOL = {"epsilon": "ε", "lambda": "λ", "islands": "N", "kappa": "κ"}
 FIGURE = {"epsilon": "Fig. 11", "lambda": "Fig. 12", "islands": "Fig. 13", "kappa": "Fig. 14"}
 COST_LABEL = {"astar": "A*", "astar-smoothed": "A*, smoothed", "eaci": "EACI", "eaci-smoothed": "EACI, smoothed"}
@@ -147,10 +151,21 @@ def grid_of(name):
 
 # ---------------------------------------------------------------- paper
 
+def family_of(variant):
+    return "ACO" if variant.startswith("aco") else "MAACO" if variant.startswith("maaco") else "EACI"
+
+
+def paper_row(label, b):
+    return [label, fixed(b[0], 2), fixed(b[1], 2), fixed(b[2], 2), fixed(b[3], 4), fixed(b[4], 2), fixed(b[5], 0),
+            "", "", "", "", ""]
+
+
 def paper_tables(df):
     specs = paper_maps()
     out = [provenance(df)]
-    ratios, timings = [], []
+    alternatives = df[df["variant"].str.startswith(MAACO_ALT)]
+    df = df[~df["variant"].str.startswith(MAACO_ALT)]
+    ratios, timings, maaco_ratios = [], [], []
     for name, m in df.groupby("map", sort=False):
         spec, astar = specs[name], m[m["variant"] == "astar"].iloc[0]
         optimum = astar["length"]
@@ -163,15 +178,15 @@ def paper_tables(df):
         sums, last_family = {}, None
         for variant, runs in m[m["variant"] != "astar"].groupby("variant", sort=False):
             s = sums[variant] = summary(runs, optimum)
-            family = "ACO" if variant.startswith("aco") else "EACI"
-            row = spec["paper_aco" if family == "ACO" else "paper_eaci"]
+            family = family_of(variant)
+            baselines = spec.get("paper_baselines", {})
+            row = {"ACO": spec["paper_aco"], "EACI": spec["paper_eaci"], "MAACO": baselines.get("MAACO")}[family]
             if row and family != last_family:
-                if family == "EACI":  # the paper's other baselines, which we cannot run (docs/algorithm.md)
-                    for other, b in spec.get("paper_baselines", {}).items():
-                        rows.append([f"paper: {other} (not run here)", fixed(b[0], 2), fixed(b[1], 2), fixed(b[2], 2),
-                                     fixed(b[3], 4), fixed(b[4], 2), fixed(b[5], 0), "", "", "", "", ""])
-                rows.append([f"paper: {family}", fixed(row[0], 2), fixed(row[1], 2), fixed(row[2], 2),
-                             fixed(row[3], 4), fixed(row[4], 2), fixed(row[5], 0), "", "", "", "", ""])
+                if family == "EACI":  # the paper's other baselines whose rules are not public
+                    for other, b in baselines.items():
+                        if other != "MAACO":
+                            rows.append(paper_row(f"paper: {other} ({NOT_RUN_REASON})", b))
+                rows.append(paper_row(f"paper: {family}", row))
             last_family = family
             rows.append([f"ours: {PAPER_LABEL[variant]}", fixed(s["iterations"], 2), fixed(s["avg_length"], 4),
                          fixed(s["best_length"], 4), fixed(s["std"], 4), fixed(s["lost"], 2), fixed(s["turn"], 0),
@@ -188,6 +203,11 @@ def paper_tables(df):
                            ratio(p["iterations"], eaci[0]), ratio(p["lost"], eaci[4]),
                            ratio(p["best_length"], eaci[2]), ratio(p["turn"], eaci[5]),
                            f"{g['optimal']}/{g['runs']}", ratio(g["iterations"], eaci[0]), ratio(g["lost"], eaci[4])])
+        if "maaco" in sums and spec.get("paper_baselines", {}).get("MAACO"):
+            b, mm = spec["paper_baselines"]["MAACO"], sums["maaco"]
+            maaco_ratios.append([name, ratio(mm["iterations"], b[0]), ratio(mm["avg_length"], b[1]),
+                                 ratio(mm["best_length"], b[2]), ratio(mm["std"], b[3]), ratio(mm["lost"], b[4]),
+                                 ratio(mm["turn"], b[5])])
         g = sums["eaci-geodesic"]["to_best"]
         timings.append([name, "A*", fixed(astar["run.time_ms"], 3), fixed(astar["run.cpu_ms"], 3),
                         fixed(astar["run.time_ms"], 3), ratio(astar["run.time_ms"], g)])
@@ -198,6 +218,11 @@ def paper_tables(df):
                    ["map", "ACO iterations", "ACO lost ants", "ACO τ0 1 ρ 0.3 iterations", "ACO τ0 1 ρ 0.3 lost ants",
                     "EACI-paper iterations", "EACI-paper lost ants", "EACI-paper best length", "EACI-paper angle",
                     "EACI-geodesic optimal", "EACI-geodesic iterations", "EACI-geodesic lost ants"], ratios))
+    if maaco_ratios:
+        out.append(f"#### {PAPER_LABEL['maaco']} ÷ the paper's MAACO\n\n" + table(
+            ["map", "iterations", "avg length", "best length", "std", "lost ants", "angle"], maaco_ratios))
+    if not alternatives.empty:
+        out.append(maaco_choice_table(df, alternatives, specs))
     threads = df["parameters"].iloc[0].get("threads", 1)
     out.append(f"#### Time to the final route\n\nMedians over the runs (robust to other load on the machine) of one "
                f"`eaci::plan()` call on {threads} thread(s): wall time, CPU time of the process (hardly affected by "
@@ -205,6 +230,28 @@ def paper_tables(df):
                f"route.\n\n" + table(["map", "planner", "wall ms/run", "CPU ms/run", "wall ms to final route",
                                       "to final route ÷ EACI-geodesic's"], timings))
     return "\n".join(out)
+
+
+def maaco_choice_table(df, alternatives, specs):
+    """MAACO with this project's decisions, then with one open choice changed at a time."""
+    rows = []
+    for name, m in df.groupby("map", sort=False):
+        if "maaco" not in set(m["variant"]):
+            continue
+        optimum = m[m["variant"] == "astar"].iloc[0]["length"]
+        b = specs[name].get("paper_baselines", {}).get("MAACO")
+        if b:
+            rows.append(paper_row(f"{name}: paper", b)[:7] + [""])
+        for variant, runs in [("maaco", m[m["variant"] == "maaco"])] + list(
+                alternatives[alternatives["map"] == name].groupby("variant", sort=False)):
+            s = summary(runs, optimum)
+            label = "decided" if variant == "maaco" else variant[len(MAACO_ALT):]
+            rows.append([f"{name}: {label}", fixed(s["iterations"], 2), fixed(s["avg_length"], 4),
+                         fixed(s["best_length"], 4), fixed(s["std"], 4), fixed(s["lost"], 2), fixed(s["turn"], 0),
+                         f"{s['optimal']}/{s['runs']}"])
+    return (f"#### {PAPER_LABEL['maaco']}: its open choices\n\nThe decided row, then each other public reading of "
+            "one choice alone (docs/algorithm.md, MAACO).\n\n" + table(
+                ["row", "iterations", "avg length", "best length", "std", "lost ants", "angle (°)", "optimal"], rows))
 
 
 def draw_grid(ax, grid, cmap=ListedColormap(["white", "black"])):
@@ -237,6 +284,7 @@ def map_panels(n, width, height):
 
 
 def paper_figures(df, figures):
+    df = df[~df["variant"].str.startswith(MAACO_ALT)]
     specs = paper_maps()
     maps = list(df.groupby("map", sort=False))
     for name, m in maps:

@@ -1,4 +1,5 @@
-// The one entry point: plan a route on an occupancy grid with EACI, classic ACO or A*.
+// The one entry point: plan a route on an occupancy grid with EACI, classic ACO, MAACO
+// (re-implemented from public descriptions, not the authors' code) or A*.
 // Checks every input and turns each problem into a status and a one-line reason.
 #pragma once
 
@@ -24,12 +25,13 @@
 
 namespace eaci {
 
-enum class Algorithm { kEaci, kAco, kAStar };
+enum class Algorithm { kEaci, kAco, kMaaco, kAStar };
 
 inline const char* toString(Algorithm a) {
   switch (a) {
     case Algorithm::kEaci: return "eaci";
     case Algorithm::kAco: return "aco";
+    case Algorithm::kMaaco: return "maaco";
     case Algorithm::kAStar: return "astar";
   }
   return "?";
@@ -38,6 +40,7 @@ inline const char* toString(Algorithm a) {
 inline bool parseAlgorithm(const std::string& text, Algorithm& out) {
   if (text == "eaci") out = Algorithm::kEaci;
   else if (text == "aco") out = Algorithm::kAco;
+  else if (text == "maaco") out = Algorithm::kMaaco;
   else if (text == "astar") out = Algorithm::kAStar;
   else return false;
   return true;
@@ -232,7 +235,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   // Colonies on the whole map (classic ACO, the paper's islands, region_margin 0) keep
   // pheromone for every cell; geodesic EACI only for its region around the route.
-  const bool whole_map_colony = algorithm == Algorithm::kAco || params.island_strategy == IslandStrategy::kPaper ||
+  const bool whole_map_colony = algorithm == Algorithm::kAco || algorithm == Algorithm::kMaaco ||
+                                params.island_strategy == IslandStrategy::kPaper ||
                                 params.region_margin == 0;
   if (algorithm != Algorithm::kAStar && whole_map_colony &&
       grid.cellCount() > kMaxPheromoneBytes / kPheromoneBytesPerCell) {
@@ -310,11 +314,13 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
       if (iteration == 0) setup_done = Clock::now();
       if (options.observer) options.observer(iteration, field, region);
     };
-    ColonyResult colony = algorithm == Algorithm::kEaci
-                              ? solveEaci(grid, start, goal, params, options.should_stop, observer,
-                                          astar_workspace, meeting_search, colony_workspace)
-                              : solveClassicAco(grid, start, goal, params, options.should_stop, observer,
-                                                colony_workspace);
+    ColonyResult colony =
+        algorithm == Algorithm::kEaci
+            ? solveEaci(grid, start, goal, params, options.should_stop, observer, astar_workspace, meeting_search,
+                        colony_workspace)
+        : algorithm == Algorithm::kMaaco
+            ? solveMaaco(grid, start, goal, params, options.should_stop, observer, colony_workspace)
+            : solveClassicAco(grid, start, goal, params, options.should_stop, observer, colony_workspace);
     r.times.search = setup_done ? std::chrono::duration<double, std::milli>(*setup_done - solve_start).count()
                                 : since(solve_start);
     r.times.colony = setup_done ? since(*setup_done) : 0.0;

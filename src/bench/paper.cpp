@@ -22,13 +22,23 @@ struct Variant {
 };
 
 // Classic ACO with our defaults tau0 = 800, rho = 0.1 (weak deposits, as the common MATLAB ACO
-// code's tau0 = 8 with Q = 1; `sweep` shows why), with strong deposits for contrast, and EACI
-// with the paper's islands and with geodesic islands.
+// code's tau0 = 8 with Q = 1; `sweep` shows why), with strong deposits for contrast, EACI
+// with the paper's islands and with geodesic islands, and MAACO (re-implemented from public
+// descriptions, not the authors' code) with this project's decisions, then with the other
+// public reading of each open choice that can move a column, one at a time ("maaco-alt ...";
+// docs/algorithm.md, MAACO).
 const std::vector<Variant> kPaperVariants = {
     {"aco", eaci::Algorithm::kAco, {}},
     {"aco-strong", eaci::Algorithm::kAco, {{"aco_tau0", "1"}, {"aco_rho", "0.3"}}},
     {"eaci-paper", eaci::Algorithm::kEaci, {{"island_strategy", "paper"}}},
     {"eaci-geodesic", eaci::Algorithm::kEaci, {{"island_strategy", "geodesic"}}},
+    {"maaco", eaci::Algorithm::kMaaco, {}},
+    {"maaco-alt maaco_candidates=nearest3", eaci::Algorithm::kMaaco, {{"maaco_candidates", "nearest3"}}},
+    {"maaco-alt maaco_start_distance=straight", eaci::Algorithm::kMaaco, {{"maaco_start_distance", "straight"}}},
+    {"maaco-alt maaco_bounds=tight", eaci::Algorithm::kMaaco, {{"maaco_bounds", "tight"}}},
+    {"maaco-alt maaco_rho=0.1", eaci::Algorithm::kMaaco, {{"maaco_rho", "0.1"}}},
+    {"maaco-alt maaco_tau0=0.1", eaci::Algorithm::kMaaco, {{"maaco_tau0", "0.1"}}},
+    {"maaco-alt maaco_k_h=0.9", eaci::Algorithm::kMaaco, {{"maaco_k_h", "0.9"}}},
 };
 
 struct SweepAxis {

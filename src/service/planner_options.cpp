@@ -18,7 +18,7 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"algorithm",
        {[](Options& o, const std::string& v) {
           if (!eaci::parseAlgorithm(v, o.algorithm))
-            throw eaci::ParameterError("algorithm must be eaci, aco or astar (got '" + v + "')");
+            throw eaci::ParameterError("algorithm must be eaci, aco, maaco or astar (got '" + v + "')");
         },
         [](const Options& o) { return ParameterValue{std::string(eaci::toString(o.algorithm))}; }}},
       {"default_tolerance", fieldAccess<Options>("default_tolerance", &Options::default_tolerance)},

@@ -13,7 +13,7 @@
 namespace eaci_service {
 
 struct RosPlannerOptions {
-  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | astar
+  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | maaco | astar
   double default_tolerance = 0.0;   // m: the route ends on the cell nearest the goal within it that the start can reach
   int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
   bool publish_plan = true;

@@ -247,7 +247,9 @@ std::optional<eaci::InflationParameters> inflationOf(const Options& o) {
 
 std::string imageCaption(const eaci::PlanResult& r, const eaci::tools::PlanContext& context) {
   std::ostringstream s;
-  s << (r.algorithm == eaci::Algorithm::kAStar ? std::string("A*") : upper(eaci::toString(r.algorithm))) << " on " << baseName(context.map_path);
+  s << (r.algorithm == eaci::Algorithm::kAStar ? std::string("A*") : upper(eaci::toString(r.algorithm)));
+  if (r.algorithm == eaci::Algorithm::kMaaco) s << " (re-implemented from public descriptions, not the authors' code)";
+  s << " on " << baseName(context.map_path);
   if (r.success()) {
     s << ", seed " << context.parameters.seed;
     if (r.algorithm != eaci::Algorithm::kAStar)
@@ -351,7 +353,8 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
 
 int run(int argc, char** argv) {
   Options o;
-  CLI::App app{"Plan a route on an occupancy map with EACI (Li, Li & Cui 2025), classic ACO or A*.\n"
+  CLI::App app{"Plan a route on an occupancy map with EACI (Li, Li & Cui 2025), classic ACO, MAACO\n"
+               "(re-implemented from public descriptions, not the authors' code) or A*.\n"
                "Exit status: 0 path found; 2 bad input (arguments, map, parameters, start or goal off the map or\n"
                "in an obstacle); 3 no path; 4 stopped (SIGINT/SIGTERM) before a path was found. The JSON's\n"
                "\"outcome\" names it: ok, no_path, stopped, start_off_map, start_blocked, goal_off_map,\n"
@@ -372,8 +375,8 @@ int run(int argc, char** argv) {
       for (auto* b : group)
         if (a != b) a->excludes(b);
   }
-  app.add_option("--algorithm", o.algorithm, "eaci, aco (classic ant colony) or astar")
-      ->check(CLI::IsMember({"eaci", "aco", "astar"}));
+  app.add_option("--algorithm", o.algorithm, "eaci, aco (classic ant colony), maaco (re-implemented from public descriptions, not the authors' code) or astar")
+      ->check(CLI::IsMember({"eaci", "aco", "maaco", "astar"}));
   app.add_option("--seed", o.seed, "random seed (overrides --params and --set)");
   app.add_option("--turn-cost", o.turn_cost,
                  "the cost of one radian of heading change between consecutive moves, added to a route's cost "

@@ -121,7 +121,7 @@ class PlannerReconfigure(unittest.TestCase):
                              "reconfigure rejected: " + NODE + "/aco_rho must be in (0, 1] (got 0); "
                              "the values in force stay (aco_rho stays 0.5)", {"aco_rho": 0.5})
         self.assert_rejected({"algorithm": "dijkstra", "cost_factor": 2.0},
-                             "reconfigure rejected: " + NODE + "/algorithm must be eaci, aco or astar (got 'dijkstra')",
+                             "reconfigure rejected: " + NODE + "/algorithm must be eaci, aco, maaco or astar (got 'dijkstra')",
                              {"algorithm": "astar", "cost_factor": 3.0})
         # Outside the cfg's range: clamped by dynamic_reconfigure (as global_planner's), then valid.
         config = self.client.update_configuration({"aco_rho": 1.5})

@@ -53,11 +53,14 @@ TEST(ReconfigureConfig, DefaultsAreTheRobotReadyOnes) {
 // The cfg's min and max are valid values (dynamic_reconfigure clamps into them), except where
 // the valid range is open at that end (then the bound itself is named as bad).
 TEST(ReconfigureConfig, TheRangesAreTheValidationsRanges) {
-  const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "aco_rho", "aco_tau0", "neutral_cost"};
+  const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "aco_rho", "aco_tau0", "neutral_cost",
+                                                "maaco_q", "maaco_rho", "maaco_tau0"};
+  const std::set<std::string> words = {"algorithm", "island_strategy", "maaco_candidates", "maaco_start_distance",
+                                       "maaco_bounds"};
   for (const PlannerConfig* bound : {&PlannerConfig::__getMin__(), &PlannerConfig::__getMax__()}) {
     const bool at_min = bound == &PlannerConfig::__getMin__();
     for (const auto& [name, text] : eaci_ros::configTexts(*bound)) {
-      if (name == "algorithm" || name == "island_strategy" || text == "inf") continue;  // no bound
+      if (words.count(name) || text == "inf") continue;  // no bound
       eaci::Parameters params = eaci_ros::rosDefaultParameters();
       RosPlannerOptions options;
       eaci_ros::setRosParameter(params, options, name, text);
@@ -132,7 +135,7 @@ TEST(ReconfigureConfig, ABadValueIsNamedWithItsValueAndWhy) {
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 0.0; }), "aco_rho must be in (0, 1] (got 0)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 1.5; }), "aco_rho must be in (0, 1] (got 1.5)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.algorithm = "dijkstra"; }),
-            "algorithm must be eaci, aco or astar (got 'dijkstra')");
+            "algorithm must be eaci, aco, maaco or astar (got 'dijkstra')");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.lethal_cost = 300; }),
             "lethal_cost must be in 1..255, the costmap cost at or above which a cell is an obstacle (got 300)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.orientation_mode = 7; }).rfind("orientation_mode: '7' is not one of", 0),

@@ -1,6 +1,7 @@
 // The route one ant walked in one iteration.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -22,5 +23,12 @@ struct AntRoute {
     cells.push_back(start);
   }
 };
+
+// The route's turns: the moves whose direction differs from the one before.
+inline int turnCount(const AntRoute& route) {
+  int turns = 0;
+  for (std::size_t k = 1; k < route.dirs.size(); ++k) turns += route.dirs[k] != route.dirs[k - 1] ? 1 : 0;
+  return turns;
+}
 
 }  // namespace eaci

@@ -1,5 +1,6 @@
-// One ant's walk from S to E through the waypoints (Eq. 8 with Eq. 9 or Eq. 16-17),
-// shared by classic ACO (waypoints S, E) and EACI (waypoints = islands).
+// One ant's walk from S to E through the waypoints (Eq. 8), shared by every colony
+// (aco/variants.hpp): classic ACO and MAACO (waypoints S, E), EACI (waypoints = islands). Its
+// rules (candidate moves, heuristic, transition) are the variant's.
 #pragma once
 
 #include <algorithm>
@@ -9,10 +10,12 @@
 #include <vector>
 
 #include "eaci/aco/ant_route.hpp"
+#include "eaci/aco/candidate_moves.hpp"
 #include "eaci/aco/colony_region.hpp"
 #include "eaci/aco/heuristic.hpp"
 #include "eaci/aco/leg_cost_field.hpp"
 #include "eaci/aco/pheromone_field.hpp"
+#include "eaci/aco/transition.hpp"
 #include "eaci/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
 
@@ -167,17 +170,35 @@ struct WalkSetup {
   }
 };
 
+// The walk rules of classic ACO and EACI (Eq. 8 with Eq. 9 or Eq. 16-17): every open move is a
+// candidate, eta = 1 / (d_jg + sigma) (WalkSetup::heuristicDistance), roulette wheel, and the
+// leg's goal taken at once when it is an open neighbour (the d = 0 guard of Eq. 9).
+struct WaypointHeuristic {
+  double operator()(const WalkSetup& setup, double /*walked_to_here*/, Cell here, std::uint32_t next,
+                    std::size_t target, int previous_dir, int dir) const {
+    return setup.heuristicDistance(here, next, target, previous_dir, dir);
+  }
+};
+struct WaypointWalk {
+  AllowedMoves candidates;
+  WaypointHeuristic heuristic;
+  RouletteTransition transition;
+  static constexpr bool kTakeGoalWhenNeighbour = true;
+};
+
 // Walks ants one after the other, reusing its memory: nothing is allocated during a walk
 // once the route's vectors have grown to the longest route seen.
 class AntWalker {
  public:
   // The ant's taboo list spans the whole route (spec 3.5): it never enters a cell twice.
   // It may not step on an island other than the one it is heading for, so the route visits
-  // the islands in order. When its current goal is an allowed neighbour it takes it at once
-  // (the d = 0 guard of Eq. 9). An ant with no allowed move is lost: route.complete = false.
+  // the islands in order. `Rules` (WaypointWalk, aco/variants.hpp) name the candidate moves,
+  // the heuristic, the transition and whether the leg's goal is taken at once when it is an
+  // open neighbour. An ant with no candidate is lost: route.complete = false.
   // `stop`: ticked once per step (a walk may take as many steps as the region has cells); once
   // it says stop the walk ends there, incomplete.
-  void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route, StopPoll* stop = nullptr) {
+  template <class Rules>
+  void walk(const WalkSetup& setup, const Rules& rules, SplitMix64& rng, AntRoute& route, StopPoll* stop = nullptr) {
     const CostGrid& grid = *setup.grid;
     const ColonyRegion& region = setup.region;
     beginWalk(region.size());
@@ -187,41 +208,54 @@ class AntWalker {
     visit(current);
     std::size_t target = 1;
     int previous_dir = -1;
+    std::array<std::uint32_t, kDirections> neighbour{};
+    constexpr bool every_open_move = decltype(rules.candidates)::kEveryOpenMove;
     while (target < setup.waypoints.size()) {
       if (stop != nullptr && stop->tick()) return;
-      int count = 0;
       int chosen = -1;
       std::uint32_t chosen_cell = ColonyRegion::kNone;
       const std::uint8_t allowed = region.moves(current);
-      // Eq. 8 numerator tau^alpha * eta^beta, in three passes: gather the allowed moves,
-      // raise their heuristic distances to -beta together, multiply.
+      // Eq. 8 numerator tau^alpha * eta^beta, in three passes: the candidates' heuristic
+      // distances (as the open moves are found, when every open move is a candidate), raised
+      // to -beta together, multiplied by their pheromone.
+      int count = 0;
+      unsigned open = 0;  // free, untabooed, onto no island but this leg's goal
+      const auto add_candidate = [&](int d, std::uint32_t j) {
+        candidate_dirs_[count] = d;
+        candidate_cells_[count] = j;
+        candidate_weights_[count] = rules.heuristic(setup, route.length, here, j, target, previous_dir, d);
+        ++count;
+      };
       for (int d = 0; d < kDirections; ++d) {
         if (!(allowed & (1u << d))) continue;
         const std::uint32_t j = region.neighbourAlong(current, d);
         if (visited(j)) continue;
         const std::int32_t waypoint = setup.waypoint_of_cell[j];
-        if (waypoint == static_cast<std::int32_t>(target)) {
+        if (waypoint == static_cast<std::int32_t>(target) && Rules::kTakeGoalWhenNeighbour) {
           chosen = d;  // the goal of this leg is a neighbour: take it
           chosen_cell = j;
           break;
         }
-        if (waypoint >= 0) continue;  // another island: not on this leg
-        candidate_dirs_[count] = d;
-        candidate_cells_[count] = j;
-        candidate_weights_[count] = setup.heuristicDistance(here, j, target, previous_dir, d);
-        ++count;
+        if (waypoint >= 0 && waypoint != static_cast<std::int32_t>(target)) continue;  // another island
+        if constexpr (every_open_move) {
+          add_candidate(d, j);
+        } else {
+          open |= 1u << d;
+          neighbour[d] = j;
+        }
       }
-      double total = 0.0;
-      if (chosen < 0 && count > 0) {
+      if (chosen < 0) {
+        if constexpr (!every_open_move)
+          for (unsigned candidates = rules.candidates(open, here); candidates != 0; candidates &= candidates - 1)
+            add_candidate(__builtin_ctz(candidates), neighbour[__builtin_ctz(candidates)]);
+        if (count == 0) return;  // deadlock: a lost ant
         setup.eta_power.applyInPlace(candidate_weights_.data(), count);
+        double total = 0.0;
         for (int k = 0; k < count; ++k) {
           candidate_weights_[k] *= setup.pheromone->weight(current, candidate_dirs_[k]);
           total += candidate_weights_[k];
         }
-      }
-      if (chosen < 0) {
-        if (count == 0) return;  // deadlock: a lost ant
-        const int k = rouletteChoice(count, total, rng);
+        const int k = rules.transition(candidate_weights_.data(), count, total, rng);
         chosen = candidate_dirs_[k];
         chosen_cell = candidate_cells_[k];
       }
@@ -239,20 +273,12 @@ class AntWalker {
     route.complete = true;
   }
 
- private:
-  // Eq. 8 by roulette wheel: the chosen candidate's position. Degenerate weights (all zero or
-  // overflowing) fall back to a uniform choice.
-  int rouletteChoice(int count, double total, SplitMix64& rng) const {
-    if (!(total > 0.0) || !std::isfinite(total)) return static_cast<int>(rng.uniform() * count);
-    const double ball = rng.uniform() * total;
-    double cumulative = 0.0;
-    for (int k = 0; k < count; ++k) {
-      cumulative += candidate_weights_[k];
-      if (ball < cumulative) return k;
-    }
-    return count - 1;
+  // Classic ACO's and EACI's walk (WaypointWalk).
+  void walk(const WalkSetup& setup, SplitMix64& rng, AntRoute& route, StopPoll* stop = nullptr) {
+    walk(setup, WaypointWalk{}, rng, route, stop);
   }
 
+ private:
   // Visit marks are stamps, so a new walk costs no clearing.
   void beginWalk(std::size_t cell_count) {
     if (stamps_.size() != cell_count) {

@@ -1,6 +1,7 @@
 // The iteration loop of an ant colony (Steps 4-6): m ants per iteration, then a pheromone
 // update, for Nc_max iterations, keeping the best complete route over all iterations. Routes
-// rank by their cost L_k (AntRoute::cost; the length on a binary map).
+// rank by their cost L_k (AntRoute::cost; the length on a binary map). The walk, the update and
+// the rank of equally cheap routes are the variant's rules (aco/variants.hpp).
 #pragma once
 
 #include <algorithm>
@@ -16,15 +17,11 @@
 #include "eaci/aco/ant_walk.hpp"
 #include "eaci/aco/colony_parameters.hpp"
 #include "eaci/aco/pheromone_update.hpp"
+#include "eaci/aco/variants.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 #include "eaci/parallel/worker_group.hpp"
 
 namespace eaci {
-
-enum class UpdateRule {
-  kClassic,   // Eq. 10-11 with evaporation rate aco_rho
-  kAdaptive,  // Eq. 23-25
-};
 
 struct ColonyRun {
   std::vector<std::uint32_t> best_cells;  // grid indices of the best route, S first; empty if none
@@ -97,14 +94,16 @@ struct ColonyWorkspace {
   }
 };
 
+// `Rules`: ClassicAcoRules, EaciRules, MaacoRules (aco/variants.hpp).
+template <class Rules>
 class Colony {
  public:
   // `cheapest_cost`: the cost of a cheapest route through the waypoints when known (geodesic
   // islands), for stop_gap; +infinity when not. `workspace`: routes, walkers and threads kept
   // by the caller between runs (null: the colony's own).
-  Colony(const WalkSetup& setup, PheromoneField& field, const ColonyParameters& params, UpdateRule update, double d_se,
+  Colony(const WalkSetup& setup, PheromoneField& field, const ColonyParameters& params, Rules rules,
          double cheapest_cost = std::numeric_limits<double>::infinity(), ColonyWorkspace* workspace = nullptr)
-      : setup_(setup), field_(field), params_(params), update_(update), d_se_(d_se),
+      : setup_(setup), field_(field), params_(params), rules_(std::move(rules)),
         good_enough_cost_(std::isfinite(cheapest_cost)
                               ? cheapest_cost * (1.0 + params.stop_gap) + 1e-9 * std::max(1.0, cheapest_cost)
                               : -std::numeric_limits<double>::infinity()),
@@ -125,13 +124,14 @@ class Colony {
         run.interrupted = true;
         break;
       }
+      rules_.transition.beginIteration(iteration, params_.max_iterations);
       const int walked = walkAnts(iteration);
       if (walk_stopped_.load(std::memory_order_relaxed)) {
         run.interrupted = true;
         break;
       }
       const bool improved = recordIteration(iteration, walked, run);
-      updatePheromone();
+      rules_.update(field_, routes_, best_, worst_, run.best_cost);
       if (observer) observer(iteration, field_, setup_.region);
       since_improvement = improved ? 0 : since_improvement + 1;
       if (params_.early_stop_iterations > 0 && !run.best_cells.empty() &&
@@ -186,7 +186,7 @@ class Colony {
         SplitMix64 rng = antStream(params_.seed, static_cast<std::uint64_t>(iteration), static_cast<std::uint64_t>(k));
         // Walk into the worker's own route, then swap it into the ant's slot: neighbouring
         // slots belong to other workers, and writing them step by step would share cache lines.
-        walker.walk(setup_, rng, scratch, &poll);
+        walker.walk(setup_, rules_, rng, scratch, &poll);
         std::swap(scratch, routes_[static_cast<std::size_t>(k)]);
         if (poll.stopped()) {  // the iteration is dropped: leave the other ants unwalked
           walk_stopped_.store(true, std::memory_order_relaxed);
@@ -199,8 +199,10 @@ class Colony {
     else walk_claimed(0);
   }
 
-  // Lost ants, this iteration's best and worst routes (lowest ant index on ties), the best so
-  // far, over the first `walked` ants.
+  // Lost ants, this iteration's best and worst routes, the best so far, over the first `walked`
+  // ants. Equally cheap routes: the lowest ant index, or with Rules::kFewerTurnsOnTies the one
+  // with fewer turns first (it then replaces an equally cheap best so far, which keeps the
+  // iteration that first found its cost).
   bool recordIteration(int iteration, int walked, ColonyRun& run) {
     constexpr double kTolerance = 1e-9;
     best_ = worst_ = -1;
@@ -211,7 +213,10 @@ class Colony {
         ++lost;
         continue;
       }
-      if (best_ < 0 || route.cost < routes_[static_cast<std::size_t>(best_)].cost - kTolerance) best_ = k;
+      if (best_ < 0 || route.cost < routes_[static_cast<std::size_t>(best_)].cost - kTolerance ||
+          (Rules::kFewerTurnsOnTies && route.cost <= routes_[static_cast<std::size_t>(best_)].cost + kTolerance &&
+           turnCount(route) < turnCount(routes_[static_cast<std::size_t>(best_)])))
+        best_ = k;
       if (worst_ < 0 || route.cost > routes_[static_cast<std::size_t>(worst_)].cost + kTolerance) worst_ = k;
     }
     run.iterations_run = iteration;
@@ -221,12 +226,17 @@ class Colony {
     if (best_ >= 0) {
       const AntRoute& best = routes_[static_cast<std::size_t>(best_)];
       run.iteration_best_cost.push_back(best.cost);
-      if (best.cost < run.best_cost - kTolerance) {
-        run.best_cost = best.cost;
+      improved = best.cost < run.best_cost - kTolerance;
+      const bool fewer_turns = Rules::kFewerTurnsOnTies && !improved && best.cost <= run.best_cost + kTolerance &&
+                               turnCount(best) < best_turns_;
+      if (improved || fewer_turns) {
+        if (improved) {
+          run.best_cost = best.cost;
+          run.best_iteration = iteration;
+        }
         run.best_cells.resize(best.cells.size());
         for (std::size_t k = 0; k < best.cells.size(); ++k) run.best_cells[k] = setup_.region.gridIndex(best.cells[k]);
-        run.best_iteration = iteration;
-        improved = true;
+        if (Rules::kFewerTurnsOnTies) best_turns_ = turnCount(best);
       }
     } else {
       run.iteration_best_cost.push_back(std::numeric_limits<double>::infinity());
@@ -235,19 +245,10 @@ class Colony {
     return improved;
   }
 
-  void updatePheromone() {
-    if (update_ == UpdateRule::kClassic) {
-      classicPheromoneUpdate(field_, routes_, params_.aco_rho, params_.q);
-    } else {
-      adaptivePheromoneUpdate(field_, routes_, best_, worst_, params_.kappa, params_.q, d_se_);
-    }
-  }
-
   const WalkSetup& setup_;
   PheromoneField& field_;
   const ColonyParameters& params_;
-  UpdateRule update_;
-  double d_se_;
+  Rules rules_;
   double good_enough_cost_;  // stop_gap: a best route this cheap ends the run (early stopping on)
   ColonyWorkspace own_workspace_;  // used when the caller keeps none
   ColonyWorkspace& workspace_;
@@ -258,6 +259,7 @@ class Colony {
   std::atomic<bool> walk_stopped_{false};   // a walk was stopped: the iteration is dropped
   int best_ = -1;
   int worst_ = -1;
+  int best_turns_ = 0;  // the best route so far's turns (Rules::kFewerTurnsOnTies)
 };
 
 }  // namespace eaci

@@ -21,6 +21,24 @@ inline const char* toString(IslandStrategy s) {
   return "?";
 }
 
+// MAACO's open choices (docs/algorithm.md, "MAACO"): the first of each is this project's decision.
+enum class MaacoCandidates {
+  kQuadrant,  // moves not against S -> E on either axis; else not against here -> E; else every move
+  kNearest3,  // the three moves nearest in angle to the direction here -> E
+};
+enum class MaacoStartDistance {
+  kWalked,    // d_sj: the route's length from S to j
+  kStraight,  // d_sj: the straight line from S to j
+};
+enum class MaacoBounds {
+  kWide,   // tau_max = 200 (1 / (2 (1 - rho)) + 1) / L_best, tau_min = tau_max / 500
+  kTight,  // tau_max = 1 / ((1 - rho) L_best), tau_min = tau_max / (2 max(W, H))
+};
+
+inline const char* toString(MaacoCandidates c) { return c == MaacoCandidates::kQuadrant ? "quadrant" : "nearest3"; }
+inline const char* toString(MaacoStartDistance d) { return d == MaacoStartDistance::kWalked ? "walked" : "straight"; }
+inline const char* toString(MaacoBounds b) { return b == MaacoBounds::kWide ? "wide" : "tight"; }
+
 struct ColonyParameters {
   int ants = 50;                 // m
   int max_iterations = 100;      // Nc_max
@@ -37,6 +55,21 @@ struct ColonyParameters {
   // paper's ACO row on all four maps (docs/benchmarks.md, `eaci_bench sweep`).
   double aco_rho = 0.1;
   double aco_tau0 = 800.0;
+  // MAACO (re-implemented from public descriptions, not the authors' code): the values both
+  // public re-implementations use (alpha, Q, q0, a, wh_max, wh_min), and this project's
+  // decisions where they differ (rho, C, k_h and the three choices; docs/algorithm.md).
+  double maaco_alpha = 1.0;        // pheromone weight
+  double maaco_q = 2.5;            // deposit constant Q
+  double maaco_rho = 0.2;          // evaporation rate, fixed
+  double maaco_tau0 = 1.0;         // C of the elliptical initial pheromone
+  double maaco_q0 = 0.5;           // q0 of the pseudo-random transition before its schedule
+  double maaco_turn_weight = 1.0;  // a, the weight of the turn term c_j
+  double maaco_wh_max = 0.9;       // the bounds of the adaptive weight h
+  double maaco_wh_min = 0.2;
+  double maaco_k_h = 1.0;          // k of h = wh_max - (wh_max - wh_min) exp(-k d_jT / d_ST)
+  MaacoCandidates maaco_candidates = MaacoCandidates::kQuadrant;
+  MaacoStartDistance maaco_start_distance = MaacoStartDistance::kWalked;
+  MaacoBounds maaco_bounds = MaacoBounds::kWide;
   IslandStrategy island_strategy = IslandStrategy::kGeodesic;
   double island_spacing_max = 2.0;   // geodesic islands: at most this many cells apart (0 = r_s only)
   // Geodesic islands: the ants walk on the cells at most this many moves from the cheapest

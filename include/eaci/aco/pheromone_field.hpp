@@ -94,6 +94,17 @@ class PheromoneField {
     if (std::min(scale_, weight_scale_) < 1e-100) renormalise();
   }
 
+  // tau <- min(max(tau, lo), hi) on every edge (MAACO's bounds); floors and re-weighs as it goes.
+  void clamp(double lo, double hi) {
+    refreshChanged();
+    for (std::size_t e = 0; e < stored_.size(); ++e) {
+      const double value = scale_ * stored_[e];
+      if (value >= lo && value <= hi) continue;
+      stored_[e] = std::min(std::max(value, lo), hi) / scale_;
+      reweigh(e);
+    }
+  }
+
   // tau += amount on one edge (negative for the penalty of Eq. 24); call refreshChanged() after.
   void deposit(std::size_t cell, int dir, double amount) {
     const std::size_t e = cell * kDirections + dir;

@@ -1,8 +1,11 @@
-// EACI (Section 4) and the classic ACO baseline (Section 3) on a CostGrid.
+// EACI (Section 4), the classic ACO baseline (Section 3) and MAACO (re-implemented from public
+// descriptions, not the authors' code) on a CostGrid: each sets up its waypoints, region and
+// initial pheromone and runs the colony with its rules (variants.hpp).
 // Both expect validated parameters and free, mutually reachable, distinct S and E;
 // eaci::plan() checks all of that before it calls them.
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -10,6 +13,7 @@
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/aco/colony.hpp"
 #include "eaci/aco/colony_region.hpp"
+#include "eaci/aco/elliptical_pheromone.hpp"
 #include "eaci/aco/geodesic_islands.hpp"
 #include "eaci/aco/initial_pheromone.hpp"
 #include "eaci/aco/islands.hpp"
@@ -145,37 +149,66 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_cost));
   if (observer) observer(0, result.pheromone, setup.region);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kAdaptive, euclidean(start, goal), islands.route_cost,
-                colony_workspace);
+  Colony<EaciRules> colony(setup, result.pheromone, params, EaciRules(params, euclidean(start, goal)),
+                           islands.route_cost, colony_workspace);
+  result.run = colony.run(should_stop, observer);
+  result.region = std::move(setup.region);
+  return result;
+}
+
+// The colonies on the whole map with waypoints S and E (classic ACO, MAACO): the region, the
+// initial pheromone `initial(region, reuse, poll)` (poll: stopped, the run is interrupted),
+// the walk with `rules`. `colony_workspace` as for solveEaci.
+template <class Rules, class InitialPheromone>
+ColonyResult solveOnWholeMap(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params, Rules rules,
+                             const InitialPheromone& initial, const StopCheck& should_stop,
+                             const IterationObserver& observer, ColonyWorkspace* colony_workspace) {
+  ColonyResult result;
+  result.waypoints = {start, goal};
+  StopPoll setup_poll(should_stop, 0);
+  ColonyRegion region =
+      ColonyRegion::wholeMap(grid, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}, &setup_poll);
+  if (!setup_poll.stopped())
+    result.pheromone = initial(region, colony_workspace ? std::move(colony_workspace->pheromone) : PheromoneField{},
+                               setup_poll);
+  if (setup_poll.stopped()) {  // the colony asks again before its first iteration
+    result.run.interrupted = true;
+    result.pheromone = PheromoneField{};
+    return result;
+  }
+  WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
+                  params.beta, params.epsilon);
+  if (observer) observer(0, result.pheromone, setup.region);
+  Colony<Rules> colony(setup, result.pheromone, params, std::move(rules), std::numeric_limits<double>::infinity(),
+                       colony_workspace);
   result.run = colony.run(should_stop, observer);
   result.region = std::move(setup.region);
   return result;
 }
 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
-// `colony_workspace` as for solveEaci.
 inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                                     const StopCheck& should_stop = {}, const IterationObserver& observer = {},
                                     ColonyWorkspace* colony_workspace = nullptr) {
-  ColonyResult result;
-  result.waypoints = {start, goal};
-  StopPoll setup_poll(should_stop, 0);
-  ColonyRegion region =
-      ColonyRegion::wholeMap(grid, colony_workspace ? std::move(colony_workspace->region) : ColonyRegion{}, &setup_poll);
-  if (setup_poll.stopped()) {  // the colony asks again before its first iteration
-    result.run.interrupted = true;
-    return result;
-  }
-  if (colony_workspace) result.pheromone = std::move(colony_workspace->pheromone);
-  result.pheromone.reset(grid.cellCount(), params.aco_tau0, params.alpha);
-  WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
-                  params.beta, params.epsilon);
-  if (observer) observer(0, result.pheromone, setup.region);
-  Colony colony(setup, result.pheromone, params, UpdateRule::kClassic, euclidean(start, goal),
-                std::numeric_limits<double>::infinity(), colony_workspace);
-  result.run = colony.run(should_stop, observer);
-  result.region = std::move(setup.region);
-  return result;
+  const auto uniform = [&](const ColonyRegion&, PheromoneField field, StopPoll&) {
+    field.reset(grid.cellCount(), params.aco_tau0, params.alpha);
+    return field;
+  };
+  return solveOnWholeMap(grid, start, goal, params, ClassicAcoRules(params), uniform, should_stop, observer,
+                         colony_workspace);
+}
+
+// MAACO (re-implemented from public descriptions, not the authors' code; docs/algorithm.md):
+// elliptical initial pheromone (C = maaco_tau0), pheromone weight maaco_alpha, MaacoRules.
+inline ColonyResult solveMaaco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
+                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
+                               ColonyWorkspace* colony_workspace = nullptr) {
+  const auto elliptical = [&](const ColonyRegion& region, PheromoneField field, StopPoll& poll) {
+    return ellipticalInitialPheromone(grid, region, start, goal, params.maaco_tau0, params.maaco_alpha,
+                                      std::move(field), &poll);
+  };
+  return solveOnWholeMap(grid, start, goal, params, MaacoRules(params, start, goal, std::max(grid.width(), grid.height())),
+                         elliptical, should_stop, observer, colony_workspace);
 }
 
 }  // namespace eaci

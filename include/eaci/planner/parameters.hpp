@@ -67,6 +67,20 @@ inline std::string validationError(const Parameters& p) {
   else if (!finite(p.epsilon) || p.epsilon < 0) e << "epsilon must be a number >= 0 (got " << p.epsilon << ")";
   else if (!finite(p.aco_rho) || p.aco_rho <= 0 || p.aco_rho > 1) e << "aco_rho must be in (0, 1] (got " << p.aco_rho << ")";
   else if (!finite(p.aco_tau0) || p.aco_tau0 <= 0) e << "aco_tau0 must be a positive number (got " << p.aco_tau0 << ")";
+  else if (!finite(p.maaco_alpha) || p.maaco_alpha < 0 || p.maaco_alpha > 20)
+    e << "maaco_alpha must be a number in [0, 20] (got " << p.maaco_alpha << ")";
+  else if (!finite(p.maaco_q) || p.maaco_q <= 0) e << "maaco_q must be a positive number (got " << p.maaco_q << ")";
+  else if (!finite(p.maaco_rho) || p.maaco_rho <= 0 || p.maaco_rho >= 1)
+    e << "maaco_rho must be in (0, 1): the pheromone bounds divide by 1 - rho (got " << p.maaco_rho << ")";
+  else if (!finite(p.maaco_tau0) || p.maaco_tau0 <= 0) e << "maaco_tau0 must be a positive number (got " << p.maaco_tau0 << ")";
+  else if (!finite(p.maaco_q0) || p.maaco_q0 < 0 || p.maaco_q0 > 1) e << "maaco_q0 must be in [0, 1] (got " << p.maaco_q0 << ")";
+  else if (!finite(p.maaco_turn_weight) || p.maaco_turn_weight < 0)
+    e << "maaco_turn_weight must be a number >= 0 (got " << p.maaco_turn_weight << ")";
+  else if (!finite(p.maaco_wh_max) || p.maaco_wh_max < 0 || p.maaco_wh_max > 1)
+    e << "maaco_wh_max must be in [0, 1] (got " << p.maaco_wh_max << ")";
+  else if (!finite(p.maaco_wh_min) || p.maaco_wh_min < 0 || p.maaco_wh_min > p.maaco_wh_max)
+    e << "maaco_wh_min must be in [0, maaco_wh_max] (got " << p.maaco_wh_min << ")";
+  else if (!finite(p.maaco_k_h) || p.maaco_k_h < 0) e << "maaco_k_h must be a number >= 0 (got " << p.maaco_k_h << ")";
   else if (!finite(p.neutral_cost) || p.neutral_cost <= 0 || p.neutral_cost > 1e6)
     e << "neutral_cost must be a number in (0, 1e6], the cost of a step into a free cell (got " << p.neutral_cost << ")";
   else if (!finite(p.cost_factor) || p.cost_factor < 0 || p.cost_factor > 1e6)
@@ -123,6 +137,23 @@ FieldAccess<Target> fieldAccess(const char* name, T Owner::*field) {
           }};
 }
 
+// A table row for a setting that is one of a few words (an enum with a toString()).
+template <class Owner, class E>
+ParameterAccess wordAccess(const char* name, E Owner::*field, std::vector<E> choices) {
+  return {[name, field, choices](Parameters& p, const std::string& v) {
+            std::string words;
+            for (E choice : choices) {
+              if (v == toString(choice)) {
+                p.*field = choice;
+                return;
+              }
+              words += (words.empty() ? "" : ", ") + std::string(toString(choice));
+            }
+            throw ParameterError(std::string(name) + ": '" + v + "' is not one of: " + words);
+          },
+          [field](const Parameters& p) { return ParameterValue{std::string(toString(p.*field))}; }};
+}
+
 // The one table of parameter names: CLI --set, --params files, ROS and the JSON output use it.
 inline const std::map<std::string, ParameterAccess>& parameterTable() {
   static const std::map<std::string, ParameterAccess> table = {
@@ -137,19 +168,28 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"epsilon", fieldAccess("epsilon", &Parameters::epsilon)},
       {"aco_rho", fieldAccess("aco_rho", &Parameters::aco_rho)},
       {"aco_tau0", fieldAccess("aco_tau0", &Parameters::aco_tau0)},
+      {"maaco_alpha", fieldAccess("maaco_alpha", &Parameters::maaco_alpha)},
+      {"maaco_q", fieldAccess("maaco_q", &Parameters::maaco_q)},
+      {"maaco_rho", fieldAccess("maaco_rho", &Parameters::maaco_rho)},
+      {"maaco_tau0", fieldAccess("maaco_tau0", &Parameters::maaco_tau0)},
+      {"maaco_q0", fieldAccess("maaco_q0", &Parameters::maaco_q0)},
+      {"maaco_turn_weight", fieldAccess("maaco_turn_weight", &Parameters::maaco_turn_weight)},
+      {"maaco_wh_max", fieldAccess("maaco_wh_max", &Parameters::maaco_wh_max)},
+      {"maaco_wh_min", fieldAccess("maaco_wh_min", &Parameters::maaco_wh_min)},
+      {"maaco_k_h", fieldAccess("maaco_k_h", &Parameters::maaco_k_h)},
+      {"maaco_candidates", wordAccess("maaco_candidates", &Parameters::maaco_candidates,
+                                      {MaacoCandidates::kQuadrant, MaacoCandidates::kNearest3})},
+      {"maaco_start_distance", wordAccess("maaco_start_distance", &Parameters::maaco_start_distance,
+                                          {MaacoStartDistance::kWalked, MaacoStartDistance::kStraight})},
+      {"maaco_bounds", wordAccess("maaco_bounds", &Parameters::maaco_bounds, {MaacoBounds::kWide, MaacoBounds::kTight})},
       {"allow_corner_cutting", fieldAccess("allow_corner_cutting", &Parameters::allow_corner_cutting)},
       {"neutral_cost", fieldAccess("neutral_cost", &Parameters::neutral_cost)},
       {"cost_factor", fieldAccess("cost_factor", &Parameters::cost_factor)},
       {"lethal_cost", fieldAccess("lethal_cost", &Parameters::lethal_cost)},
       {"smooth_path", fieldAccess("smooth_path", &Parameters::smooth_path)},
       {"allow_unknown", fieldAccess("allow_unknown", &Parameters::allow_unknown)},
-      {"island_strategy",
-       {[](Parameters& p, const std::string& v) {
-          if (v == "geodesic") p.island_strategy = IslandStrategy::kGeodesic;
-          else if (v == "paper") p.island_strategy = IslandStrategy::kPaper;
-          else throw ParameterError("island_strategy: '" + v + "' is not one of: geodesic, paper");
-        },
-        [](const Parameters& p) { return ParameterValue{std::string(toString(p.island_strategy))}; }}},
+      {"island_strategy", wordAccess("island_strategy", &Parameters::island_strategy,
+                                     {IslandStrategy::kGeodesic, IslandStrategy::kPaper})},
       {"island_spacing_max", fieldAccess("island_spacing_max", &Parameters::island_spacing_max)},
       {"region_margin", fieldAccess("region_margin", &Parameters::region_margin)},
       {"early_stop_iterations", fieldAccess("early_stop_iterations", &Parameters::early_stop_iterations)},
