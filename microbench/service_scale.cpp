@@ -10,6 +10,7 @@
 // plan (PlanReply::phases) on lines starting with #.
 //   build/bin/eaci_service_scale [--benchmark_filter=...] [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <chrono>
 #include <cstdio>
@@ -108,29 +109,53 @@ void BM_ServiceShortRouteFewChanged(benchmark::State& state) { planShortRoute(st
 void BM_ServiceShortRouteUnchangedUntold(benchmark::State& state) { planShortRoute(state, false, Told::kNothing); }
 void BM_ServiceShortRouteFewChangedUntold(benchmark::State& state) { planShortRoute(state, true, Told::kNothing); }
 
+// Resident memory of this process, MB (Linux: VmRSS of /proc/self/status; 0 elsewhere).
+double residentMegabytes() {
+  std::FILE* status = std::fopen("/proc/self/status", "r");
+  if (status == nullptr) return 0.0;
+  char line[256];
+  double kb = 0.0;
+  while (std::fgets(line, sizeof(line), status) != nullptr)
+    if (std::sscanf(line, "VmRSS: %lf kB", &kb) == 1) break;
+  std::fclose(status);
+  return kb / 1024.0;
+}
+
 // A route across the map (corner room to corner room), repeated on the costmap as it is: the
-// plan's work grows with the route here, the part that does not is the map's.
+// plan's work grows with the route here, the part that does not is the map's. Arguments: the
+// size, the algorithm (0 EACI, 1 A*) and the landmarks. Counters: the memory the service's kept
+// buffers (its copy of the costmap, the grid, the search labels, the colony's region and
+// pheromone, the landmarks) add to the process, MB (run one size and algorithm per process for
+// a clean figure: --benchmark_filter='RouteAcross/2048/1/0$').
 void BM_ServiceRouteAcross(benchmark::State& state) {
   const int size = static_cast<int>(state.range(0));
   const eaci_service::CostmapSnapshot& costmap = costmapOf(size);
+  malloc_trim(0);  // what making the costmap freed goes back first
+  const double before = residentMegabytes();
   eaci_service::PlanningService service(eaci_service::ServiceSettings{}, eaci_service::Logger{});
-  service.configure(eaci_service::rosDefaultParameters(), eaci_service::RosPlannerOptions{}, "");
+  eaci_service::RosPlannerOptions options;
+  options.algorithm = state.range(1) == 0 ? eaci::Algorithm::kEaci : eaci::Algorithm::kAStar;
+  options.landmarks = static_cast<int>(state.range(2));
+  service.configure(eaci_service::rosDefaultParameters(), options, "");
   eaci_service::PlanRequest request;
   request.start = costmap.frame.cellToWorld({40, 40});
   request.goal = costmap.frame.cellToWorld({size - 40, size - 40});
   eaci_service::PlanReply reply;
   for (int warm = 0; warm < 50; ++warm) {  // landmarks made in the background, then used
     reply = service.plan(eaci_service::CostmapView::of(costmap), request, eaci_service::CostmapChanges::none());
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(options.landmarks > 0 ? 20 : 0));
   }
   for (auto _ : state) {
     reply = service.plan(eaci_service::CostmapView::of(costmap), request, eaci_service::CostmapChanges::none());
     if (!reply.ok()) state.SkipWithError(reply.error.c_str());
   }
   state.counters["route_cells"] = static_cast<double>(reply.result.path.size());
+  state.counters["kept_MB"] = residentMegabytes() - before;
   printPhases(size, reply);
 }
-BENCHMARK(BM_ServiceRouteAcross)->Arg(400)->Arg(1200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ServiceRouteAcross)
+    ->ArgsProduct({{400, 1200, 2048}, {0, 1}, {0, 4}})
+    ->Unit(benchmark::kMillisecond);
 
 #define EACI_SIZES ->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_ServiceShortRouteUnchanged) EACI_SIZES;

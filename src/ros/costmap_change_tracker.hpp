@@ -24,7 +24,12 @@ class CostmapChangeTracker : public costmap_2d::Layer {
   // The rectangles kept at most; more are merged into the one that holds them all.
   static constexpr std::size_t kMaxRects = 32;
 
-  CostmapChangeTracker() { current_ = true; }
+  // Enabled from the start (costmap_2d's Layer starts disabled, and updateMap skips a disabled
+  // layer: it would never be told of an update).
+  CostmapChangeTracker() {
+    current_ = true;
+    enabled_ = true;
+  }
 
   void updateCosts(costmap_2d::Costmap2D&, int min_i, int min_j, int max_i, int max_j) override;
   void reset() override { markEverything(); }

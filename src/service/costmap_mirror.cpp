@@ -78,6 +78,16 @@ CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const Costma
     for (int y = y0; y < y1; ++y) done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
     done.rows_read += static_cast<std::size_t>(std::max(0, y1 - y0));
   }
+  const std::size_t audit_rows =
+      std::min(static_cast<std::size_t>(height), std::max<std::size_t>(1, audit_bytes_ / static_cast<std::size_t>(width)));
+  for (std::size_t k = 0; k < audit_rows; ++k) {
+    if (audit_next_ >= height) audit_next_ = 0;
+    if (syncRow(costmap, audit_next_++, 0, width)) {
+      ++done.rows_missed;
+      ++done.rows_changed;
+    }
+  }
+  done.rows_read += audit_rows;
   return done;
 }
 

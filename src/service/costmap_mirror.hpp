@@ -5,8 +5,9 @@
 // costmap plans on them, the start's way out is opened in them) and the planners' grid made
 // from them (eaci::CostGrid: the interpretation of every byte, row 0 at the top). sync() reads
 // the costmap where it changed -- the rectangles its keeper reports, or, when nobody knows,
-// every row compared with the copy (a memcmp per row, no interpretation) -- and interprets
-// again only the rows that differ; the grid numbers each change by row (CostGrid::rowChange),
+// every row compared with the copy (a memcmp per row, no interpretation), plus a few rows
+// audited round the map in case the keeper missed a change -- and interprets again only the
+// rows that differ; the grid numbers each change by row (CostGrid::rowChange),
 // so the landmarks are checked again only where it changed (LandmarkCache). A new size,
 // origin, resolution, row order, interpretation or move rule makes both afresh (their memory
 // is kept when large enough).
@@ -26,10 +27,17 @@ namespace eaci_service {
 
 class CostmapMirror {
  public:
+  // Told what changed, a sync also compares this many bytes of whole rows (at least one row),
+  // the next rows each time, round the map: a change its keeper failed to report is found
+  // within (cells / kAuditBytes) plans (a few microseconds a plan).
+  static constexpr std::size_t kAuditBytes = std::size_t{64} << 10;
+  explicit CostmapMirror(std::size_t audit_bytes = kAuditBytes) : audit_bytes_(audit_bytes) {}
+
   struct Sync {
     bool afresh = false;         // made anew (first plan, a new frame or interpretation)
     std::size_t rows_read = 0;   // buffer rows compared or copied
     std::size_t rows_changed = 0;
+    std::size_t rows_missed = 0; // rows the audit found changed that the keeper had not reported
   };
 
   // Brings the copy and the grid up to `costmap` (every cell valid), read as `interpretation`
@@ -64,6 +72,8 @@ class CostmapMirror {
   bool sameSetting(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
                    bool allow_corner_cutting, eaci::CostRule rule) const;
 
+  std::size_t audit_bytes_;
+  int audit_next_ = 0;  // the buffer row the next audit starts at
   CostmapSnapshot copy_;
   eaci::CostGrid grid_;
   eaci::CellInterpretation interpretation_;

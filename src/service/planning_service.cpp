@@ -313,8 +313,13 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   const CostmapMirror::Sync synced =
       placed ? stood_in_.sync(CostmapView::of(*placed), CostmapChanges::unknown(), interpretation,
                               params.allow_corner_cutting, eaci::costRule(params))
-             : mirror_.sync(costmap, mirror_missed_changes_ ? CostmapChanges::unknown() : changes, interpretation,
-                            params.allow_corner_cutting, eaci::costRule(params));
+             : mirror_.sync(costmap, mirror_missed_changes_ || distrust_changes_ ? CostmapChanges::unknown() : changes,
+                            interpretation, params.allow_corner_cutting, eaci::costRule(params));
+  if (synced.rows_missed > 0 && !distrust_changes_) {
+    distrust_changes_ = true;
+    say(LogLevel::kWarn, "the costmap changed in " + std::to_string(synced.rows_missed) +
+                             " rows its change tracker did not report: from now on every plan compares every row of it");
+  }
   // A plan on the stand-in leaves mirror_ behind the changes the caller reported: the next sync compares every row.
   mirror_missed_changes_ = placed.has_value();
   if (!placed) mirror_filled_ = !isUniform(costmap);

@@ -188,6 +188,7 @@ class PlanningService {
   CostmapMirror mirror_;                      // the plan's: the costmap as of the last plan
   bool mirror_filled_ = false;                // the plan's: mirror_ holds a filled (not uniform) costmap
   bool mirror_missed_changes_ = false;        // the plan's: the last plan did not sync mirror_ (it stood in)
+  bool distrust_changes_ = false;             // the plan's: the caller's changes missed some (the audit found them)
   CostmapMirror stood_in_;                    // the plan's: the last filled costmap placed into an emptied one's frame
   std::string emptied_reported_;              // the plan's: the stand-in's sentence last said
   int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
 #include "costmap_mirror.hpp"
@@ -69,31 +70,52 @@ TEST(CostmapMirror, MatchesAFreshGridAfterEveryChangeToldOrNot) {
   }
 }
 
-TEST(CostmapMirror, ToldNothingItReadsNothingAndNumbersOnlyTheRowsThatChanged) {
+TEST(CostmapMirror, ToldNothingItReadsOnlyItsAuditRowAndNumbersOnlyTheRowsThatChanged) {
   std::mt19937 random(3);
   CostmapSnapshot costmap = randomCostmap(10, 8, random);
-  CostmapMirror mirror;
-  mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {});
+  CostmapMirror mirror(10);  // audits one row (10 bytes) a sync
+  const auto sync = [&](const CostmapChanges& changes) {
+    return mirror.sync(CostmapView::of(costmap), changes, costmapInterpretation(), false, {});
+  };
+  sync(CostmapChanges::none());
   const std::vector<std::uint8_t> before = bytesOf(mirror.grid());
   std::vector<std::uint64_t> changes_before;
   for (int r = 0; r < 8; ++r) changes_before.push_back(mirror.grid().rowChange(r));
 
-  // Buffer row 1 is grid row 6 (bottom first). Told nothing: the copy keeps what it had.
+  // Buffer row 1 is grid row 6 (bottom first). Told nothing: the first sync audits buffer row
+  // 0 only, so the copy keeps what it had.
   costmap.cells[1 * 10 + 4] = costmap.cells[1 * 10 + 4] == 0 ? 254 : 0;
-  EXPECT_EQ(mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {}).rows_read, 0u);
+  const CostmapMirror::Sync first = sync(CostmapChanges::none());
+  EXPECT_EQ(first.rows_read, 1u);
+  EXPECT_EQ(first.rows_missed, 0u);
   EXPECT_EQ(bytesOf(mirror.grid()), before);
-  // Told a rectangle that holds it: read, and only row 6 gets a new change number.
+  // Told a rectangle that holds it: read (3 rows and the audit's row 1, already synced), and
+  // only grid row 6 gets a new change number.
   CostmapChanges changes = CostmapChanges::none();
   changes.rects.push_back({2, 0, 6, 3});  // buffer rows 0..2
-  const CostmapMirror::Sync synced =
-      mirror.sync(CostmapView::of(costmap), changes, costmapInterpretation(), false, {});
-  EXPECT_EQ(synced.rows_read, 3u);
-  EXPECT_EQ(synced.rows_changed, 1u);
+  const CostmapMirror::Sync told = sync(changes);
+  EXPECT_EQ(told.rows_read, 4u);
+  EXPECT_EQ(told.rows_changed, 1u);
+  EXPECT_EQ(told.rows_missed, 0u);
   EXPECT_EQ(bytesOf(mirror.grid()), freshGridBytes(costmap));
   for (int r = 0; r < 8; ++r) {
     if (r == 6) EXPECT_GT(mirror.grid().rowChange(r), changes_before[static_cast<std::size_t>(r)]);
     else EXPECT_EQ(mirror.grid().rowChange(r), changes_before[static_cast<std::size_t>(r)]) << "row " << r;
   }
+}
+
+// A change its keeper never reports is found by the audit within one round of the map.
+TEST(CostmapMirror, TheAuditFindsAChangeNobodyReported) {
+  std::mt19937 random(4);
+  CostmapSnapshot costmap = randomCostmap(10, 8, random);
+  CostmapMirror mirror(20);  // two rows a sync
+  mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {});
+  costmap.cells[7 * 10 + 9] = costmap.cells[7 * 10 + 9] == 0 ? 254 : 0;  // buffer row 7
+  std::size_t missed = 0;
+  for (int k = 0; k < 4; ++k)  // rows 2-3, 4-5, 6-7, ...: found on the third sync
+    missed += mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {}).rows_missed;
+  EXPECT_EQ(missed, 1u);
+  EXPECT_EQ(bytesOf(mirror.grid()), freshGridBytes(costmap));
 }
 
 TEST(CostmapMirror, ANewFrameOrInterpretationMakesItAfresh) {
@@ -127,6 +149,28 @@ TEST(CostmapMirror, OpenedCellsLastOnePlan) {
   EXPECT_EQ(mirror.costmap().cells[2 * 6 + 3], kCostmapInscribed);
   EXPECT_TRUE(mirror.grid().isBlocked(eaci::Cell{2, 3}));
   EXPECT_EQ(bytesOf(mirror.grid()), freshGridBytes(costmap));
+}
+
+// A caller whose reports missed a change is not trusted again: the service says so once and
+// compares every row from then on.
+TEST(CostmapMirror, TheServiceStopsTrustingReportsThatMissedAChange) {
+  std::vector<std::string> warnings;
+  PlanningService service(ServiceSettings{}, [&warnings](LogLevel level, const std::string& line) {
+    if (level == LogLevel::kWarn) warnings.push_back(line);
+  });
+  test::configure(service, test::configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot costmap = test::openCostmap(30, 20);
+  const PlanRequest request = test::request(costmap, {10, 2}, {10, 27});
+  ASSERT_TRUE(service.plan(CostmapView::of(costmap), request, CostmapChanges::none()).ok());
+  for (int row = 5; row <= 15; ++row) test::at(costmap, row, 15) = kCostmapLethal;  // not reported
+  const PlanReply reply = service.plan(CostmapView::of(costmap), request, CostmapChanges::none());
+  ASSERT_TRUE(reply.ok()) << reply.error;
+  EXPECT_EQ(test::routeDefect(costmap, reply.result.path, {10, 2}, {10, 27}), "");  // the audit read the whole small map
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("did not report"), std::string::npos) << warnings[0];
+  const PlanReply next = service.plan(CostmapView::of(costmap), request, CostmapChanges::none());
+  EXPECT_EQ(next.phases.rows_read, 20u);  // every row, whatever it is told
+  EXPECT_EQ(warnings.size(), 1u);
 }
 
 // Through the service: a wall put on the last route, anywhere along it, is avoided by the next
