@@ -19,22 +19,32 @@
 
 namespace eaci_ros {
 
+// The costmap's cells and frame as they are (call with its lock held): valid while it is held.
+inline eaci_service::CostmapView costmap2DView(const costmap_2d::Costmap2DROS& costmap_ros) {
+  const costmap_2d::Costmap2D& costmap = *costmap_ros.getCostmap();
+  eaci_service::CostmapView view;
+  view.frame_id = costmap_ros.getGlobalFrameID();
+  view.frame.origin = {costmap.getOriginX(), costmap.getOriginY()};
+  view.frame.resolution = costmap.getResolution();
+  view.frame.width = static_cast<int>(costmap.getSizeInCellsX());
+  view.frame.height = static_cast<int>(costmap.getSizeInCellsY());
+  view.cells = costmap.getCharMap();
+  view.order = eaci::RowOrder::kBottomFirst;  // costmap_2d keeps the row at the origin first
+  return view;
+}
+
 // A copy of the costmap's cells and frame, taken under the costmap's own lock and released
 // before it returns. The lock is recursive: move_base's planner thread, and Move Base Flex's
 // with planner_lock_costmap, already hold it around makePlan.
-
 inline eaci_service::CostmapSnapshot copyCostmap2D(costmap_2d::Costmap2DROS* costmap_ros) {
   if (costmap_ros == nullptr) throw std::runtime_error("no costmap");
-  costmap_2d::Costmap2D* costmap = costmap_ros->getCostmap();
+  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap_ros->getCostmap()->getMutex());
+  const eaci_service::CostmapView view = costmap2DView(*costmap_ros);
   eaci_service::CostmapSnapshot copy;
-  copy.frame_id = costmap_ros->getGlobalFrameID();
-  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
-  copy.frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
-  copy.frame.resolution = costmap->getResolution();
-  copy.frame.width = static_cast<int>(costmap->getSizeInCellsX());
-  copy.frame.height = static_cast<int>(costmap->getSizeInCellsY());
-  const unsigned char* cells = costmap->getCharMap();
-  copy.cells.assign(cells, cells + std::size_t{costmap->getSizeInCellsX()} * costmap->getSizeInCellsY());
+  copy.frame_id = view.frame_id;
+  copy.frame = view.frame;
+  copy.order = view.order;
+  copy.cells.assign(view.cells, view.cells + view.cellCount());
   return copy;
 }
 
@@ -44,17 +54,9 @@ inline eaci_service::CostmapSnapshot copyCostmap2D(costmap_2d::Costmap2DROS* cos
 inline eaci_service::PlanReply planOnCostmap2D(costmap_2d::Costmap2DROS* costmap_ros, CostmapChangeTracker* tracker,
                                                const RosPlanner::CostmapPlan& plan) {
   if (costmap_ros == nullptr) throw std::runtime_error("no costmap");
-  costmap_2d::Costmap2D* costmap = costmap_ros->getCostmap();
-  eaci_service::CostmapView view;
-  view.frame_id = costmap_ros->getGlobalFrameID();
-  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap->getMutex());
-  view.frame.origin = {costmap->getOriginX(), costmap->getOriginY()};
-  view.frame.resolution = costmap->getResolution();
-  view.frame.width = static_cast<int>(costmap->getSizeInCellsX());
-  view.frame.height = static_cast<int>(costmap->getSizeInCellsY());
-  view.cells = costmap->getCharMap();
-  view.order = eaci::RowOrder::kBottomFirst;
-  return plan(view, tracker != nullptr ? tracker->take() : eaci_service::CostmapChanges::unknown());
+  std::unique_lock<costmap_2d::Costmap2D::mutex_t> lock(*costmap_ros->getCostmap()->getMutex());
+  return plan(costmap2DView(*costmap_ros),
+              tracker != nullptr ? tracker->take() : eaci_service::CostmapChanges::unknown());
 }
 
 // A CostmapChangeTracker added to `costmap_ros`'s layers (under its lock), or null with the

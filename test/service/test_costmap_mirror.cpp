@@ -15,14 +15,10 @@ namespace {
 
 // Random costmap_2d costs, bottom row first: free, graded, inscribed, lethal and unknown cells.
 CostmapSnapshot randomCostmap(int width, int height, std::mt19937& random) {
-  CostmapSnapshot costmap;
-  costmap.frame.width = width;
-  costmap.frame.height = height;
-  costmap.frame.resolution = 0.05;
-  costmap.frame_id = "map";
+  CostmapSnapshot costmap = test::openCostmap(width, height);
   costmap.order = eaci::RowOrder::kBottomFirst;
   std::uniform_int_distribution<int> value(0, 255);
-  for (int i = 0; i < width * height; ++i) costmap.cells.push_back(static_cast<std::uint8_t>(value(random)));
+  for (std::uint8_t& cell : costmap.cells) cell = static_cast<std::uint8_t>(value(random));
   return costmap;
 }
 
