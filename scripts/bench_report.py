@@ -878,8 +878,11 @@ def front_figures(df, figures):
         ax.scatter([p[0] for p in paper.values()], [p[1] for p in paper.values()], marker="*", s=160,
                    color="gold", edgecolors="black", linewidths=0.7, zorder=5,
                    label="the paper's table (best length, corner angle)")
-        for algorithm, (length, angle) in paper.items():
-            ax.annotate(algorithm, (length, angle), textcoords="offset points", xytext=(6, 5), fontsize=9)
+        same = {}  # algorithms the paper's table puts on one point share one label
+        for algorithm, point in paper.items():
+            same.setdefault(point, []).append(algorithm)
+        for (length, angle), names in same.items():
+            ax.annotate(", ".join(names), (length, angle), textcoords="offset points", xytext=(7, 5), fontsize=9)
         ax.axhline(min(a for _, a in paper.values()), color="0.5", ls=":", lw=1)
         ax.axvline(paper["EACI"][0], color="0.5", ls=":", lw=1)
         ax.set_xlabel("route length (cells)")
@@ -887,7 +890,10 @@ def front_figures(df, figures):
         ax.set_title(f"{name} ({spec['table']}): length against total corner angle\n"
                      "dotted: the paper's EACI length and the least angle in its table")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8, loc="upper right")
+        legend = ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
+        for handle in getattr(legend, "legend_handles", None) or legend.legendHandles:
+            if hasattr(handle, "set_sizes"):
+                handle.set_sizes([60])
         save(fig, figures, f"front_{name.replace('paper-', '')}.png")
 
 
