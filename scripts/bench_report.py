@@ -3,7 +3,7 @@
 
 Usage: scripts/bench_report.py [--records DIR] [--doc FILE] [--figures DIR] [--stdout] [STUDY ...]
 
-STUDY is paper, sweep, scale, deadline, costs or scen (default: every DIR/STUDY.jsonl there is).
+STUDY is paper, sweep, front, scale, deadline, costs or scen (default: every DIR/STUDY.jsonl there is).
 For each, the Markdown between `<!-- generated: STUDY -->` (and `sweep-aco`) and `<!-- end -->` in the doc is
 replaced by the tables made from DIR/STUDY.jsonl (--stdout: printed instead), and the study's
 figures are drawn into the figures directory. A record is one JSON line written by eaci_bench
@@ -28,7 +28,7 @@ from matplotlib.colors import ListedColormap, LogNorm  # noqa: E402
 
 INF = math.inf
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-STUDIES = ["paper", "sweep", "scale", "deadline", "costs", "scen"]
+STUDIES = ["paper", "sweep", "front", "scale", "deadline", "costs", "scen"]
 PAPER_LABEL = {"astar": "A*", "aco": "classic ACO", "aco-strong": "classic ACO, τ0 = 1, ρ = 0.3",
                "eaci-paper": "EACI, paper islands", "eaci-geodesic": "EACI, geodesic islands",
                "maaco": "MAACO (re-implemented from public descriptions, not the authors' code)"}
@@ -772,11 +772,136 @@ def scen_tables(df):
     return "\n".join(out)
 
 
+# ---------------------------------------------------------------- front (issue #30)
+
+FRONT_PAPER_ROWS = ("ACO", "IACO", "CMEACO", "MAACO", "EACI")
+FRONT_EACI_LABEL = {"eaci-geodesic": "ours: EACI, geodesic islands", "eaci-paper": "ours: EACI, paper islands"}
+FRONT_EACI_STYLE = {"eaci-geodesic": ("tab:green", "o"), "eaci-paper": ("tab:blue", "s")}
+
+
+def front_paper_points(spec):
+    """The paper's table rows for a map: {algorithm: (best length, corner angle °)} where both are given."""
+    rows = {"ACO": spec.get("paper_aco"), "EACI": spec.get("paper_eaci")}
+    rows.update(spec.get("paper_baselines") or {})
+    return {a: (rows[a][2], rows[a][5]) for a in FRONT_PAPER_ROWS
+            if rows.get(a) and rows[a][2] is not None and rows[a][5] is not None}
+
+
+def nondominated(points):
+    """The (length, angle) pairs no other pair beats in both (ties in both count once)."""
+    pts = sorted(set((round(l, 6), round(a, 6)) for l, a in points))
+    return [p for p in pts if not any(q != p and q[0] <= p[0] + 1e-9 and q[1] <= p[1] + 1e-9 for q in pts)]
+
+
+def front_verdict(name, m, spec):
+    """Whether the exact front holds a route no longer than the paper's EACI route (its best length,
+    which the paper gives to 2 decimals) turning less than every algorithm of the paper's table."""
+    paper = front_paper_points(spec)
+    limit_len, limit_angle = paper["EACI"][0], min(a for _, a in paper.values())
+    front = m[m["variant"] == "pareto"]
+    fit = front[front["length"] <= limit_len + 0.005]
+    least = fit.loc[fit["run.total_turn_deg"].idxmin()] if len(fit) else None
+    lowest = front["run.total_turn_deg"].min()
+    if least is not None and least["run.total_turn_deg"] < limit_angle:
+        return (f"**{name}: yes.** The paper's EACI route is {limit_len:.2f} long; the least turning route no longer "
+                f"than that turns {least['run.total_turn_deg']:.0f}° (length {least['length']:.4f}), below "
+                f"{limit_angle:.0f}°, the least angle in the paper's table.")
+    why = (f"the least turning route no longer than that turns {least['run.total_turn_deg']:.0f}° "
+           f"(length {least['length']:.4f})" if least is not None else "no route is that short")
+    return (f"**{name}: no.** The paper's EACI route is {limit_len:.2f} long and the least angle in the paper's table "
+            f"is {limit_angle:.0f}°; {why}, and no route on this map at all turns less than {lowest:.0f}° (the front's "
+            f"least turning end). The front shows it cannot be done on this map with this angle measure.")
+
+
+def front_tables(df):
+    specs = paper_maps()
+    out = [provenance(df)]
+    verdicts = []
+    for name, m in df.groupby("map", sort=False):
+        spec = specs[name]
+        heading = m[m["variant"] == "heading"]
+        front = m[m["variant"] == "pareto"].sort_values("length")
+        front_pts = nondominated(zip(front["length"], front["run.total_turn_deg"]))
+        rows = []
+        for _, r in heading.iterrows():
+            on = (round(r["length"], 6), round(r["run.total_turn_deg"], 6)) in front_pts
+            rows.append([fixed(r["extra.turn_cost"], 2), fixed(r["length"], 4), fixed(r["run.total_turn_deg"], 0),
+                         fixed(r["run.combined_cost"], 4), "yes" if on else "no"])
+        out.append(f"#### {name} ({spec['table']})\n\nThe exact search over (cell, heading) states, one route per "
+                   f"turn_cost (0: plain A*, whose tie among shortest routes is arbitrary):\n\n" + table(
+                       ["turn_cost (per rad)", "length", "corner angle (°)", "combined cost", "on the front"], rows))
+        out.append("The whole exact front (every Pareto-nondominated route, shortest first): " + ", ".join(
+            f"{l:.4f} / {a:.0f}°" for l, a in front_pts) + ".\n")
+        rows = []
+        for variant, runs in m[m["variant"].str.startswith("eaci")].groupby("variant", sort=False):
+            pts = [(round(l, 4), a) for l, a in zip(runs["length"], runs["run.total_turn_deg"]) if math.isfinite(l)]
+            counts = {}
+            for p in pts:
+                counts[p] = counts.get(p, 0) + 1
+            rows.append([FRONT_EACI_LABEL[variant], f"{len(pts)}/{len(runs)}",
+                         "; ".join(f"{l:.4f} / {a:.0f}° ×{n}" for (l, a), n in sorted(counts.items()))])
+        for algorithm, (length, angle) in front_paper_points(spec).items():
+            rows.append([f"paper: {algorithm} (best length)", "", f"{length:.2f} / {angle:.0f}°"])
+        out.append(table(["routes", "success", "length / corner angle (°) × seeds"], rows))
+        verdicts.append("- " + front_verdict(name, m, spec))
+    out.append("#### The question of issue #30\n\nA route no longer than the paper's EACI route with a total corner "
+               "angle below every algorithm in the paper's table:\n\n" + "\n".join(verdicts) + "\n")
+    return "\n".join(out)
+
+
+def front_figures(df, figures):
+    specs = paper_maps()
+    for name, m in df.groupby("map", sort=False):
+        spec = specs[name]
+        fig, ax = plt.subplots(figsize=(7.2, 5.2))
+        front = m[m["variant"] == "pareto"].sort_values("length")
+        pts = nondominated(zip(front["length"], front["run.total_turn_deg"]))
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        # The front as a staircase: a route of length x can turn as little as the front's point at or left of x.
+        ax.step(xs + [xs[-1] + 0.6], ys + [ys[-1]], where="post", color="black", lw=1.2, alpha=0.5)
+        ax.plot(xs, ys, "k-D", ms=6, lw=0, label="exact front (every nondominated route)")
+        heading = m[m["variant"] == "heading"]
+        ax.plot(heading["length"], heading["run.total_turn_deg"], "x", color="tab:red", ms=9, mew=1.6,
+                label="exact (cell, heading) search, turn_cost sweep")
+        jitter = {"eaci-geodesic": -0.04, "eaci-paper": 0.04}
+        for variant, runs in m[m["variant"].str.startswith("eaci")].groupby("variant", sort=False):
+            ok = runs[np.isfinite(runs["length"])]
+            color, marker = FRONT_EACI_STYLE[variant]
+            counts = {}
+            for l, a in zip(ok["length"], ok["run.total_turn_deg"]):
+                counts[(round(l, 4), a)] = counts.get((round(l, 4), a), 0) + 1
+            ax.scatter([k[0] + jitter[variant] for k in counts], [k[1] for k in counts],
+                       s=[30 + 12 * n for n in counts.values()], color=color, marker=marker, alpha=0.55,
+                       edgecolors="black", linewidths=0.5,
+                       label=f"{FRONT_EACI_LABEL[variant]}, {len(runs)} seeds (area ∝ seeds)")
+        paper = front_paper_points(spec)
+        ax.scatter([p[0] for p in paper.values()], [p[1] for p in paper.values()], marker="*", s=160,
+                   color="gold", edgecolors="black", linewidths=0.7, zorder=5,
+                   label="the paper's table (best length, corner angle)")
+        same = {}  # algorithms the paper's table puts on one point share one label
+        for algorithm, point in paper.items():
+            same.setdefault(point, []).append(algorithm)
+        for (length, angle), names in same.items():
+            ax.annotate(", ".join(names), (length, angle), textcoords="offset points", xytext=(7, 5), fontsize=9)
+        ax.axhline(min(a for _, a in paper.values()), color="0.5", ls=":", lw=1)
+        ax.axvline(paper["EACI"][0], color="0.5", ls=":", lw=1)
+        ax.set_xlabel("route length (cells)")
+        ax.set_ylabel("total corner angle of the grid route (°)")
+        ax.set_title(f"{name} ({spec['table']}): length against total corner angle\n"
+                     "dotted: the paper's EACI length and the least angle in its table")
+        ax.grid(alpha=0.3)
+        legend = ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
+        for handle in getattr(legend, "legend_handles", None) or legend.legendHandles:
+            if hasattr(handle, "set_sizes"):
+                handle.set_sizes([60])
+        save(fig, figures, f"front_{name.replace('paper-', '')}.png")
+
+
 # ---------------------------------------------------------------- main
 
-TABLES = {"paper": paper_tables, "sweep": sweep_tables, "scale": scale_tables, "deadline": deadline_tables,
+TABLES = {"paper": paper_tables, "sweep": sweep_tables, "front": front_tables, "scale": scale_tables, "deadline": deadline_tables,
           "costs": costs_tables, "scen": scen_tables}
-FIGURES = {"paper": paper_figures, "sweep": sweep_figures, "scale": scale_figures, "costs": costs_figures}
+FIGURES = {"paper": paper_figures, "sweep": sweep_figures, "front": front_figures, "scale": scale_figures, "costs": costs_figures}
 
 
 def replace_block(doc, name, text):

@@ -50,6 +50,16 @@ int main(int argc, char** argv) {
     cmd->add_option("--threads", paper.threads, "threads per plan (0 = all cores)")->check(CLI::Range(0, 1024));
   }
 
+  eaci_bench::FrontOptions front;
+  CLI::App* front_cmd = app.add_subcommand("front", "the paper's four maps, length against total corner angle: the exact "
+                                                    "(cell, heading) search for a sweep of turn_cost, the whole exact front, "
+                                                    "EACI's routes (corner cutting allowed)");
+  front_cmd->add_option("--maps", front.maps_dir, "directory with the paper's maps and paper_maps.json")->required();
+  front_cmd->add_option("--runs", front.runs, "EACI seeds 1..runs per map and island strategy")->check(CLI::Range(1, 10000));
+  front_cmd->add_option("--threads", front.threads, "threads per EACI plan (0 = all cores)")->check(CLI::Range(0, 1024));
+  front_cmd->add_option("--turn-costs", front.turn_costs, "turn_cost values (per radian) of the exact search")
+      ->delimiter(',')->check(CLI::Range(0.0, 1e6));
+
   eaci_bench::GeneratedOptions scale, deadline;
   deadline.sizes = {800};
   deadline.runs = 3;
@@ -125,6 +135,7 @@ int main(int argc, char** argv) {
     int status = 0;
     if (command == "paper") eaci_bench::runPaper(paper, out);
     if (command == "sweep") eaci_bench::runSweep(paper, out);
+    if (command == "front") eaci_bench::runFront(front, out);
     if (command == "scale") {
       scale.kinds = parseKinds(kinds, scale.kinds);
       eaci_bench::runScale(scale, out);

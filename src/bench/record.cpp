@@ -68,7 +68,7 @@ nlohmann::json timedPlan(const TimedPlanRequest& request, bool with_curves, bool
   nlohmann::json run = {
       // A route the colony did not find (geodesic EACI's fallback to its search route) is no success here.
       {"success", r.success() && !r.route_from_search}, {"route_from_search", r.route_from_search},
-      {"length", finiteOrNull(r.length)}, {"cost", finiteOrNull(r.cost)},
+      {"length", finiteOrNull(r.length)}, {"cost", finiteOrNull(r.cost)}, {"combined_cost", finiteOrNull(r.combined_cost)},
       {"smoothed_length", finiteOrNull(r.smoothed_length)}, {"total_turn_deg", r.total_turn_deg},
       {"iterations_to_converge", r.iterations_to_converge}, {"iterations_run", r.iterations_run},
       {"lost_ants_total", r.lost_ants_total}, {"stopped_early", r.stopped_early}, {"interrupted", r.interrupted},

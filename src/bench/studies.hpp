@@ -19,6 +19,13 @@ struct PaperOptions {
   std::vector<int> snapshot_iterations = {0, 1, 5, 15, 30};  // paper: pheromone snapshots of EACI's seed 1
 };
 
+struct FrontOptions {  // front: length against total corner angle on the paper's maps (issue #30)
+  std::string maps_dir;
+  int runs = 20;      // EACI seeds 1..runs per map and island strategy
+  int threads = 1;
+  std::vector<double> turn_costs = {0, 0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 1, 1.5, 2, 3, 5, 10};  // per radian
+};
+
 struct GeneratedOptions {  // scale and deadline
   std::vector<int> sizes = {50, 100, 200, 400, 800};
   std::vector<MapKind> kinds = {MapKind::kRooms, MapKind::kClutter};
@@ -62,6 +69,7 @@ class RecordWriter;
 
 void runPaper(const PaperOptions& options, RecordWriter& out);
 void runSweep(const PaperOptions& options, RecordWriter& out);
+void runFront(const FrontOptions& options, RecordWriter& out);
 void runScale(const GeneratedOptions& options, RecordWriter& out);
 void runDeadline(const GeneratedOptions& options, RecordWriter& out);
 void runCosts(CostsOptions options, RecordWriter& out);
