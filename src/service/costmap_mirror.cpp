@@ -43,7 +43,7 @@ bool CostmapMirror::syncRow(const CostmapView& costmap, int y, int x0, int x1) {
   const std::size_t count = static_cast<std::size_t>(x1 - x0);
   if (std::memcmp(costmap.cells + at, copy_.cells.data() + at, count) == 0) return false;
   std::memcpy(copy_.cells.data() + at, costmap.cells + at, count);
-  const int row = copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y;
+  const int row = gridRow(y);
   grid_.assignRect(view(), cell_byte_, row, row + 1, x0, x1);
   return true;
 }
@@ -103,10 +103,9 @@ void CostmapMirror::open(eaci::Cell c, std::uint8_t value) {
 void CostmapMirror::restore() {
   for (auto it = opened_.rbegin(); it != opened_.rend(); ++it) {
     copy_.cells[it->buffer_index] = it->value;
-    const int width = copy_.frame.width;
-    const int y = static_cast<int>(it->buffer_index / static_cast<std::size_t>(width));
-    const int row = copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y;
-    const int col = static_cast<int>(it->buffer_index % static_cast<std::size_t>(width));
+    const auto width = static_cast<std::size_t>(copy_.frame.width);
+    const int row = gridRow(static_cast<int>(it->buffer_index / width));
+    const int col = static_cast<int>(it->buffer_index % width);
     grid_.assignRect(view(), cell_byte_, row, row + 1, col, col + 1);
   }
   opened_.clear();

@@ -69,6 +69,8 @@ class CostmapMirror {
                   bool allow_corner_cutting, eaci::CostRule rule);
   // Copies and interprets columns [x0, x1) of buffer row `y` if they differ from the copy.
   bool syncRow(const CostmapView& costmap, int y, int x0, int x1);
+  // The grid row (row 0 = top) of buffer row `y` of the copy.
+  int gridRow(int y) const { return copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y; }
   bool sameSetting(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
                    bool allow_corner_cutting, eaci::CostRule rule) const;
 

@@ -47,7 +47,8 @@ std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eac
 std::optional<CostmapSnapshot> EmptiedCostmapStandIn::standIn(const CostmapView& costmap,
                                                               const CostmapSnapshot* last_filled,
                                                               Clock::time_point now, std::string& said) {
-  if (!isUniform(costmap)) {
+  filled_ = !isUniform(costmap);
+  if (filled_) {
     emptied_since_.reset();
     return std::nullopt;
   }

@@ -46,9 +46,12 @@ class EmptiedCostmapStandIn {
   // the placed copy does not fit.
   std::optional<CostmapSnapshot> standIn(const CostmapView& costmap, const CostmapSnapshot* last_filled,
                                          Clock::time_point now, std::string& said);
+  // The costmap of the last standIn() was filled (not uniform).
+  bool lastWasFilled() const { return filled_; }
 
  private:
   const Clock::duration max_wait_;
+  bool filled_ = false;
   std::optional<Clock::time_point> emptied_since_;  // the first plan that found the costmap emptied
 };
 

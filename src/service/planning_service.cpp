@@ -322,7 +322,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   }
   // A plan on the stand-in leaves mirror_ behind the changes the caller reported: the next sync compares every row.
   mirror_missed_changes_ = placed.has_value();
-  if (!placed) mirror_filled_ = !isUniform(costmap);
+  if (!placed) mirror_filled_ = emptied_stand_in_.lastWasFilled();  // only read when the stand-in is asked
   planned_on = &mirror;
   reply.phases.afresh = synced.afresh;
   reply.phases.rows_read = synced.rows_read;
