@@ -13,6 +13,8 @@
 #include <malloc.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <thread>
 #include <map>
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "eaci/grid/inflation.hpp"
+#include "eaci/io/map_io.hpp"
 #include "planning_service.hpp"
 
 namespace {
@@ -156,6 +159,64 @@ void BM_ServiceRouteAcross(benchmark::State& state) {
 BENCHMARK(BM_ServiceRouteAcross)
     ->ArgsProduct({{400, 1200, 2048}, {0, 1}, {0, 4}})
     ->Unit(benchmark::kMillisecond);
+
+// The nav2 protocol on a map file (issue #31's through-move_base comparison, without ROS): the
+// map of $EACI_SCALE_MAP (map_server YAML) inflated as the lab's costmap inflates it (footprint's
+// inscribed radius 0.1125 m, inflation 0.55 m, cost_scaling_factor 5), 12 pairs of free cells
+// more than 3 m apart drawn with a fixed seed, each planned once per iteration with the plugin's
+// defaults (allow_unknown false, as config/move_base_params.yaml). Argument: 0 EACI, 1 A*.
+//   EACI_SCALE_MAP=/tmp/mbmaps/rooms400.yaml build/bin/eaci_service_scale --benchmark_filter=MapPairs
+void BM_ServiceMapPairs(benchmark::State& state) {
+  const char* path = std::getenv("EACI_SCALE_MAP");
+  if (path == nullptr) {
+    state.SkipWithError("set EACI_SCALE_MAP to a map_server YAML");
+    return;
+  }
+  const eaci::OccupancyMap map = eaci::loadMap(path);
+  eaci::InflationParameters inflation;
+  inflation.inscribed_radius = 0.1125;
+  inflation.inflation_radius = 0.55;
+  inflation.cost_scaling_factor = 5.0;
+  eaci_service::CostmapSnapshot costmap;
+  costmap.cells = eaci::inflatedCosts(map.view(), map.resolution, inflation);
+  costmap.frame = map;
+  costmap.frame_id = "map";
+  costmap.order = eaci::RowOrder::kTopFirst;
+  std::vector<eaci::Cell> free_cells;
+  for (int r = 0; r < map.height; ++r)
+    for (int c = 0; c < map.width; ++c)
+      if (costmap.cells[costmap.bufferIndex({r, c})] < eaci_service::kCostmapInscribed) free_cells.push_back({r, c});
+  std::mt19937 random(1);
+  std::uniform_int_distribution<std::size_t> pick(0, free_cells.size() - 1);
+  std::vector<std::pair<eaci::Cell, eaci::Cell>> pairs;
+  while (pairs.size() < 12) {
+    const eaci::Cell a = free_cells[pick(random)], b = free_cells[pick(random)];
+    if (std::hypot(a.row - b.row, a.col - b.col) * map.resolution > 3.0) pairs.push_back({a, b});
+  }
+  eaci_service::PlanningService service(eaci_service::ServiceSettings{}, eaci_service::Logger{});
+  eaci_service::RosPlannerOptions options;
+  options.algorithm = state.range(0) == 0 ? eaci::Algorithm::kEaci : eaci::Algorithm::kAStar;
+  eaci::Parameters parameters = eaci_service::rosDefaultParameters();
+  parameters.allow_unknown = false;
+  service.configure(parameters, options, "");
+  eaci_service::PlanReply reply;
+  const auto planAll = [&] {
+    for (const auto& [a, b] : pairs) {
+      eaci_service::PlanRequest request;
+      request.start = costmap.frame.cellToWorld(a);
+      request.goal = costmap.frame.cellToWorld(b);
+      reply = service.plan(eaci_service::CostmapView::of(costmap), request, eaci_service::CostmapChanges::none());
+      if (!reply.ok()) state.SkipWithError(reply.error.c_str());
+    }
+  };
+  for (int warm = 0; warm < 5; ++warm) {  // landmarks made in the background, then used
+    planAll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  for (auto _ : state) planAll();
+  state.counters["ms_per_plan"] = benchmark::Counter(12.0 * 1e3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ServiceMapPairs)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 #define EACI_SIZES ->Arg(512)->Arg(1024)->Arg(2048)->Arg(4096)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_ServiceShortRouteUnchanged) EACI_SIZES;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "eaci/aco/auxiliary_map.hpp"
@@ -88,6 +89,33 @@ TEST(ColonyRegion, MarginCountsMovesSoAWallKeepsCellsBehindItOut) {
   // (1,0) = 1: south-east to (2,1) would cut the wall's corner too.
   EXPECT_EQ(region.neighbour(1, kSouthEast), kNone);
   EXPECT_EQ(region.neighbour(1, kSouth), 2u);
+}
+
+// A route across the map, corner to corner: its bounding box is the whole map, its region the
+// cells within 2 moves of a diagonal cell, the band |row - col| <= 4: 300 + 2 x (299 + 298 +
+// 297 + 296) = 2680 cells, numbered in grid order, each with the neighbours the band holds.
+TEST(ColonyRegion, ARouteAcrossTheMapHoldsTheBandAlongIt) {
+  const CostGrid grid = emptyGrid(300, 300);
+  CellPath diagonal;
+  for (int k = 0; k < 300; ++k) diagonal.push_back(Cell{k, k});
+  const ColonyRegion region = ColonyRegion::aroundRoute(grid, diagonal, 2);
+  ASSERT_EQ(region.size(), 2680u);
+  std::uint32_t expected_number = 0;
+  for (int r = 0; r < 300; ++r)
+    for (int c = 0; c < 300; ++c) {
+      const bool in_band = std::abs(r - c) <= 4;
+      const std::uint32_t number = regionCell(region, grid, Cell{r, c});
+      ASSERT_EQ(number, in_band ? expected_number : kNone) << r << "," << c;
+      if (!in_band) continue;
+      ++expected_number;
+      EXPECT_EQ(region.neighbour(number, kEast) != kNone, c + 1 < 300 && std::abs(r - c - 1) <= 4) << r << "," << c;
+      EXPECT_EQ(region.neighbour(number, kSouthEast) != kNone, r + 1 < 300 && c + 1 < 300) << r << "," << c;
+    }
+  // (150, 152): after the band's cells of rows 0-149 (5 + 6 + 7 + 8 + 9 x 146 = 1340) and
+  // (150, 146..151): 1346. Its south-west neighbour is (151, 151).
+  const std::uint32_t at = regionCell(region, grid, Cell{150, 152});
+  EXPECT_EQ(at, 1346u);
+  EXPECT_EQ(region.neighbour(at, kSouthWest), regionCell(region, grid, Cell{151, 151}));
 }
 
 TEST(ColonyRegion, WholeMapNumbersCellsByGridIndexAndMovesByTheGridsRule) {

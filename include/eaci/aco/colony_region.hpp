@@ -17,6 +17,7 @@
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 #include "eaci/grid/cell_window.hpp"
+#include "eaci/grid/sparse_cell_map.hpp"
 
 namespace eaci {
 
@@ -69,16 +70,17 @@ class ColonyRegion {
     region.grid_cells_ = grid.cellCount();
     region.grid_width_ = grid.width();
     // Every region cell lies within `margin` of the route's bounding box: the map-to-region
-    // numbering covers that box only, so a short route costs no pass over the whole map.
-    if (!route.empty()) region.bounds_ = CellWindow::around(grid, route, margin);
-    region.region_of_slot_.assign(region.bounds_.size(), kNone);
-    const auto mark = [&region](Cell c) -> std::uint32_t& { return region.region_of_slot_[region.bounds_.slot(c)]; };
+    // numbering covers that box, in blocks made only where the region is (SparseCellMap), so
+    // neither a short route nor one across the map costs a pass over the map or the box.
+    region.region_of_cell_.reset(route.empty() ? CellWindow{} : CellWindow::around(grid, route, margin));
+    const auto mark = [&region](Cell c) -> std::uint32_t& { return region.region_of_cell_.at(c); };
+    const auto marked = [&region](Cell c) { return region.region_of_cell_.get(c) != kNone; };
     // Breadth first from the route, one ring of moves at a time; marks cells with 0 on entry.
     std::vector<std::uint32_t>& ring = region.ring_;
     std::vector<std::uint32_t>& next_ring = region.next_ring_;
     for (const Cell& c : route) {
       if (!grid.isFree(c)) continue;
-      if (mark(c) == kNone) {
+      if (!marked(c)) {
         mark(c) = 0;
         region.grid_index_.push_back(static_cast<std::uint32_t>(grid.index(c)));
         ring.push_back(static_cast<std::uint32_t>(grid.index(c)));
@@ -98,7 +100,7 @@ class ColonyRegion {
         const Cell here = grid.cellAt(i);
         for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
           const Cell next = step(here, __builtin_ctz(moves));
-          if (mark(next) != kNone) continue;
+          if (marked(next)) continue;
           mark(next) = 0;
           const auto j = static_cast<std::uint32_t>(grid.index(next));
           region.grid_index_.push_back(j);
@@ -119,7 +121,7 @@ class ColonyRegion {
       for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
         const int d = __builtin_ctz(moves);
         const Cell next = step(here, d);
-        const std::uint32_t n = region.bounds_.contains(next) ? mark(next) : kNone;
+        const std::uint32_t n = region.region_of_cell_.get(next);
         region.neighbours_[r * kDirections + static_cast<std::size_t>(d)] = n;
         if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
       }
@@ -143,7 +145,7 @@ class ColonyRegion {
   // The same for a cell of the grid.
   std::uint32_t regionIndex(Cell c) const {
     if (whole_map_) return static_cast<std::uint32_t>(static_cast<std::size_t>(c.row) * static_cast<std::size_t>(grid_width_) + static_cast<std::size_t>(c.col));
-    return bounds_.contains(c) ? region_of_slot_[bounds_.slot(c)] : kNone;
+    return region_of_cell_.get(c);
   }
 
   // The moves out of region cell r that stay in the region: bit d for direction d.
@@ -165,8 +167,8 @@ class ColonyRegion {
     too_large_ = false;
     grid_cells_ = size_ = 0;
     grid_width_ = 0;
-    bounds_ = CellWindow{};
-    for (auto* v : {&grid_index_, &region_of_slot_, &neighbours_, &ring_, &next_ring_}) v->clear();
+    region_of_cell_.reset(CellWindow{});
+    for (auto* v : {&grid_index_, &neighbours_, &ring_, &next_ring_}) v->clear();
     moves_.clear();
   }
 
@@ -197,12 +199,11 @@ class ColonyRegion {
   std::vector<std::uint8_t> moves_;  // per region cell: bit d when the move in direction d is allowed and stays inside
   // Whole map: the index step of each move.
   std::array<std::ptrdiff_t, kDirections> index_step_{};
-  // Around a route: grid index per region cell, region number per cell of `bounds_` (the
-  // route's bounding box grown by the margin), neighbours.
+  // Around a route: grid index per region cell, region number per cell of the route's bounding
+  // box grown by the margin (kNone elsewhere), neighbours.
   std::vector<std::uint32_t> grid_index_;
   int grid_width_ = 0;
-  CellWindow bounds_;
-  std::vector<std::uint32_t> region_of_slot_;
+  SparseCellMap region_of_cell_;
   std::vector<std::uint32_t> neighbours_;  // [r * kDirections + d]
   std::vector<std::uint32_t> ring_, next_ring_;  // aroundRoute's rings of cells (and sort scratch)
 };

@@ -8,8 +8,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <memory>
+#include <new>
 
 namespace eaci {
 namespace detail {
@@ -56,15 +58,23 @@ class KeptLabels {
   }
 
  private:
+  struct FreeDeleter {
+    void operator()(void* memory) const { std::free(memory); }
+  };
   struct Arrays {
     std::unique_ptr<double[]> costs;
     std::unique_ptr<std::uint8_t[]> moves;
-    std::unique_ptr<std::uint16_t[]> generations;
-    void allocate(std::size_t slots) {  // every label of generation 0: no search's
+    std::unique_ptr<std::uint16_t[], FreeDeleter> generations;
+    // Every label of generation 0: no search's. The stamps come zeroed from calloc, which
+    // takes fresh pages from the system for a map-sized array without writing them, and
+    // costs and moves are not initialised: a page of any of them is resident only once a
+    // search labels a cell on it (a short route on a large map costs the pages it touches).
+    void allocate(std::size_t slots) {
       generations.reset();  // the old buffers go first
       costs.reset();
       moves.reset();
-      generations.reset(new std::uint16_t[slots]());
+      generations.reset(static_cast<std::uint16_t*>(std::calloc(slots, sizeof(std::uint16_t))));
+      if (!generations) throw std::bad_alloc();
       costs.reset(new double[slots]);
       moves.reset(new std::uint8_t[slots]);
     }
