@@ -165,6 +165,7 @@ BENCHMARK(BM_ServiceRouteAcross)
 // inscribed radius 0.1125 m, inflation 0.55 m, cost_scaling_factor 5), 12 pairs of free cells
 // more than 3 m apart drawn with a fixed seed, each planned once per iteration with the plugin's
 // defaults (allow_unknown false, as config/move_base_params.yaml). Argument: 0 EACI, 1 A*.
+// $EACI_SCALE_LANDMARKS sets the landmarks kept (default 4).
 //   EACI_SCALE_MAP=/tmp/mbmaps/rooms400.yaml build/bin/eaci_service_scale --benchmark_filter=MapPairs
 void BM_ServiceMapPairs(benchmark::State& state) {
   const char* path = std::getenv("EACI_SCALE_MAP");
@@ -196,6 +197,7 @@ void BM_ServiceMapPairs(benchmark::State& state) {
   eaci_service::PlanningService service(eaci_service::ServiceSettings{}, eaci_service::Logger{});
   eaci_service::RosPlannerOptions options;
   options.algorithm = state.range(0) == 0 ? eaci::Algorithm::kEaci : eaci::Algorithm::kAStar;
+  if (const char* marks = std::getenv("EACI_SCALE_LANDMARKS")) options.landmarks = std::atoi(marks);
   eaci::Parameters parameters = eaci_service::rosDefaultParameters();
   parameters.allow_unknown = false;
   service.configure(parameters, options, "");

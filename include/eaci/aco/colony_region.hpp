@@ -113,17 +113,45 @@ class ColonyRegion {
     sortIndices(region.grid_index_, ring);
     region.size_ = region.grid_index_.size();
     for (std::size_t r = 0; r < region.size_; ++r) mark(grid.cellAt(region.grid_index_[r])) = static_cast<std::uint32_t>(r);
+    // The neighbours, by the region's order (grid index order): the cells of the row above and
+    // of the row below are found by two cursors into grid_index_ that only move forward.
     region.neighbours_.assign(region.size_ * kDirections, kNone);
     region.moves_.assign(region.size_, 0);
+    const std::vector<std::uint32_t>& index = region.grid_index_;
+    const auto width = static_cast<std::int64_t>(grid.width());
+    std::size_t above = 0, below = 0;
+    // The region numbers of the cells `first`, `first` + 1, `first` + 2 (kNone for those not in
+    // the region) from `cursor` on, which is moved to the first region cell at or after `first`.
+    const auto threeFrom = [&index](std::size_t& cursor, std::int64_t first, std::uint32_t (&found)[3]) {
+      while (cursor < index.size() && static_cast<std::int64_t>(index[cursor]) < first) ++cursor;
+      std::size_t at = cursor;
+      for (int k = 0; k < 3; ++k) {
+        found[k] = kNone;
+        if (at < index.size() && static_cast<std::int64_t>(index[at]) == first + k) found[k] = static_cast<std::uint32_t>(at++);
+      }
+    };
     for (std::size_t r = 0; r < region.size_; ++r) {
       if (poll.tick()) return region;
-      const Cell here = grid.cellAt(region.grid_index_[r]);
-      for (unsigned moves = grid.movesFrom(here); moves != 0; moves &= moves - 1) {
-        const int d = __builtin_ctz(moves);
-        const Cell next = step(here, d);
-        const std::uint32_t n = region.region_of_cell_.get(next);
-        region.neighbours_[r * kDirections + static_cast<std::size_t>(d)] = n;
-        if (n != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
+      const auto here_index = static_cast<std::int64_t>(index[r]);
+      std::uint32_t up[3], down[3];  // columns col - 1, col, col + 1
+      threeFrom(above, here_index - width - 1, up);
+      threeFrom(below, here_index + width - 1, down);
+      static_assert(kDirRow[1] == -1 && kDirCol[1] == 1 && kDirRow[3] == -1 && kDirCol[3] == -1 && kDirRow[5] == 1 &&
+                        kDirCol[5] == -1 && kDirRow[7] == 1 && kDirCol[7] == 1 && kDirCol[0] == 1 && kDirCol[4] == -1,
+                    "the directions as along[] lists them: E, NE, N, NW, W, SW, S, SE");
+      std::uint32_t along[kDirections];
+      along[0] = r + 1 < region.size_ && index[r + 1] == index[r] + 1 ? static_cast<std::uint32_t>(r + 1) : kNone;
+      along[1] = up[2];
+      along[2] = up[1];
+      along[3] = up[0];
+      along[4] = r > 0 && index[r - 1] + 1 == index[r] ? static_cast<std::uint32_t>(r - 1) : kNone;
+      along[5] = down[0];
+      along[6] = down[1];
+      along[7] = down[2];
+      for (unsigned moves = grid.movesFrom(grid.cellAt(index[r])); moves != 0; moves &= moves - 1) {
+        const int d = __builtin_ctz(moves);  // an allowed move stays on the map: no wrap round a row
+        region.neighbours_[r * kDirections + static_cast<std::size_t>(d)] = along[d];
+        if (along[d] != kNone) region.moves_[r] |= static_cast<std::uint8_t>(1u << d);
       }
     }
     return region;

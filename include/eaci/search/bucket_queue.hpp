@@ -112,10 +112,16 @@ struct BucketEntry {
   double cost;  // the label it was pushed with: stale once the cell's label is lower
   std::uint32_t slot;
 };
+// The same for labels kept as floats (the search that meets in the middle): 8 bytes, not 16.
+struct FloatBucketEntry {
+  float cost;
+  std::uint32_t slot;
+};
 
+template <class Entry = BucketEntry>
 class BucketQueue {
  public:
-  static constexpr double kWidth = BucketRing<BucketEntry>::kWidth;
+  static constexpr double kWidth = BucketRing<Entry>::kWidth;
 
   void clear() {
     ring_.clear();
@@ -123,14 +129,14 @@ class BucketQueue {
     size_ = 0;
   }
   // `priority` >= 0; one below the current bucket's edge (rounding) joins the current bucket.
-  void push(double priority, const BucketEntry& entry) {
+  void push(double priority, const Entry& entry) {
     ++size_;
-    ring_.file(std::max(BucketRing<BucketEntry>::bucketOf(priority), ring_.current()), entry);
+    ring_.file(std::max(BucketRing<Entry>::bucketOf(priority), ring_.current()), entry);
   }
   // The next live entry into `next` (stale ones, that `stale` finds, are dropped on the way);
   // false when there is none.
   template <class Stale>
-  bool pop(BucketEntry& next, const Stale& stale) {
+  bool pop(Entry& next, const Stale& stale) {
     if (!advance(stale)) return false;
     next = ring_.currentBucket()[read_++];
     --size_;
@@ -150,7 +156,7 @@ class BucketQueue {
   template <class Stale>
   bool advance(const Stale& stale) {
     for (;;) {
-      std::vector<BucketEntry>& bucket = ring_.currentBucket();
+      std::vector<Entry>& bucket = ring_.currentBucket();
       while (read_ < bucket.size() && stale(bucket[read_])) {
         ++read_;
         --size_;
@@ -163,7 +169,7 @@ class BucketQueue {
     }
   }
 
-  BucketRing<BucketEntry> ring_;
+  BucketRing<Entry> ring_;
   std::size_t read_ = 0;  // the next entry of the current bucket
   std::size_t size_ = 0;  // entries not yet left, stale ones included
 };

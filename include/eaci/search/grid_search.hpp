@@ -96,6 +96,7 @@ struct ResultLabels {
   double* costs;
   std::uint8_t* moves;  // null: moves not kept
   double cost(std::uint32_t slot) const { return costs[slot]; }
+  static double kept(double c) { return c; }
   void label(std::uint32_t slot, double c, std::uint8_t move) {
     costs[slot] = c;
     if (moves != nullptr) moves[slot] = move;

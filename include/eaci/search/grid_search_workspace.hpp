@@ -25,7 +25,7 @@ class GridSearchWorkspace {
   void search(const CostGrid& grid, const GridSearchRequest& request) {
     window_ = request.window.value_or(CellWindow::whole(grid));
     labels_.prepare(window_.size());
-    detail::StampedLabels labels = labels_.of(0);
+    detail::StampedLabels<> labels = labels_.of(0);
     detail::runGridSearch(grid, request, window_, labels, open_, frontier_, stopped_);
   }
 
@@ -42,7 +42,7 @@ class GridSearchWorkspace {
   CellPath routeTo(Cell c) const {
     CellPath route;
     if (!reached(c)) return route;
-    const detail::StampedLabels labels = labels_.of(0);
+    const detail::StampedLabels<> labels = labels_.of(0);
     appendRouteBack(window_, c, [&labels](std::size_t slot) { return labels.moveInto(slot); }, route);
     std::reverse(route.begin(), route.end());
     return route;

@@ -109,7 +109,7 @@ class Landmarks {
     if (landmarksCancelled(cancel)) return nullptr;
     std::vector<double> distance(cells_in_grid);
     std::vector<double> nearest_landmark(cells_in_grid, std::numeric_limits<double>::infinity());
-    detail::BucketQueue open;
+    detail::BucketQueue<> open;
     if (!symmetricCosts(grid, seed, distance, open, cancel)) return nullptr;
     if (!farthest(distance, seed, cancel)) return nullptr;
     landmarks->count_ = count;
@@ -204,7 +204,7 @@ class Landmarks {
   // Costs of cheapest routes from `source` over the symmetric move costs, +infinity where
   // unreached; false when cancelled.
   static bool symmetricCosts(const CostGrid& grid, std::size_t source, std::vector<double>& distance,
-                             detail::BucketQueue& open, const std::atomic<bool>* cancel) {
+                             detail::BucketQueue<>& open, const std::atomic<bool>* cancel) {
     if (!forCellChunks(distance.size(), cancel, [&](std::size_t begin, std::size_t end) {
           std::fill(distance.begin() + static_cast<std::ptrdiff_t>(begin),
                     distance.begin() + static_cast<std::ptrdiff_t>(end), std::numeric_limits<double>::infinity());

@@ -1,7 +1,11 @@
 // A cheapest route by two searches that meet in the middle, one from each end, on one or two
 // threads, with landmark bounds where a LandmarkCache has them: the exact search of a planner
 // that plans many times on large maps (geodesic islands' route on maps of 256 x 256 cells and
-// more). Same costs as A* (searchGrid); of several equally cheap routes it may pick another.
+// more). Its labels keep costs as floats (7 bytes a cell and side, where A*'s keep 11), so a
+// label is a route's cost rounded at every move: the route costs what A*'s costs (searchGrid)
+// to within that rounding, n moves x 2^-24 of the cost each way (a few millionths on a route of
+// a hundred moves), and its cost is summed again exactly along it. Of several equally cheap
+// routes it may pick another.
 #pragma once
 
 #include <algorithm>
@@ -70,8 +74,8 @@ struct MeetingBounds {
 // alike, so each side is a Dijkstra search on the same reduced costs, with a bucket queue
 // (BucketQueue: a cell may be labelled again within a bucket).
 struct MeetingSide {
-  StampedLabels labels;
-  BucketQueue* open;
+  StampedLabels<float> labels;
+  BucketQueue<FloatBucketEntry>* open;
   std::vector<std::uint32_t>* touched;  // the slots this side labelled in its last round
   const MeetingBounds* bounds;
   bool forward;
@@ -83,15 +87,18 @@ struct MeetingSide {
     const double half = bounds->halfDifference(c, slot);
     return g + (forward ? half : -half) + 0.5 * bounds->span;
   }
-  bool stale(const BucketEntry& e) const { return e.cost > labels.cost(e.slot); }
-  void push(std::uint32_t slot, Cell c, double g) { open->push(priority(c, slot, g), BucketEntry{g, slot}); }
+  bool stale(const FloatBucketEntry& e) const { return e.cost > labels.cost(e.slot); }
+  // `g` as the labels keep it (a float: the entry holds it exactly).
+  void push(std::uint32_t slot, Cell c, double g) {
+    open->push(priority(c, slot, g), FloatBucketEntry{static_cast<float>(g), slot});
+  }
 
   // Takes up to `cells` cells off the open list; labels only its own slots, reads nothing of
   // the other side. Adds the cells it took to `taken`. Ends early once `stop` says so.
   void round(const CostGrid& grid, const CellWindow& window, const SearchNeighbourhood& around, int cells) {
     touched->clear();
-    const auto is_stale = [this](const BucketEntry& e) { return stale(e); };
-    BucketEntry top;
+    const auto is_stale = [this](const FloatBucketEntry& e) { return stale(e); };
+    FloatBucketEntry top;
     for (int n = 0; n < cells && open->pop(top, is_stale); ++n, ++taken) {
       if (stop.tick()) return;
       relaxMoves(grid, around, top.slot, window.cellAt(top.slot), top.cost, !forward, labels,
@@ -116,7 +123,8 @@ class MeetingSearch {
   // left. With `threads` >= 2 the two sides of each full-size round run at the same time where
   // a second thread, kept with the search, claims one (WorkerGroup::share); the rounds, and so
   // the route, are the same on one thread.
-  // Empty when the target cannot be reached. `cost`: the route's cost (+infinity without one).
+  // Empty when the target cannot be reached. `cost`: the route's cost (routeCost, exact;
+  // +infinity without one).
   // `stop`: the caller's stop check; each side ticks a poll of its own (StopPoll::
   // forAnotherThread) once per cell it takes, and once either says stop the search ends
   // with no route (stopped() true, `stop` latched).
@@ -150,8 +158,8 @@ class MeetingSearch {
     int rounds = 0;
     for (;;) {
       double lowest[2];
-      const bool open_forward = sides[0].open->lowerBound(lowest[0], [&](const detail::BucketEntry& e) { return sides[0].stale(e); });
-      const bool open_backward = sides[1].open->lowerBound(lowest[1], [&](const detail::BucketEntry& e) { return sides[1].stale(e); });
+      const bool open_forward = sides[0].open->lowerBound(lowest[0], [&](const detail::FloatBucketEntry& e) { return sides[0].stale(e); });
+      const bool open_backward = sides[1].open->lowerBound(lowest[1], [&](const detail::FloatBucketEntry& e) { return sides[1].stale(e); });
       if (!open_forward || !open_backward) break;  // one side has settled all it can reach
       if (lowest[0] + lowest[1] >= mu + span) break;
       // Rounds grow from kFirstMeetingRound cells to kSmallMeetingRound and stay there until
@@ -197,7 +205,6 @@ class MeetingSearch {
       if (stop != nullptr) stop->latch();
       return route;
     }
-    if (cost != nullptr) *cost = mu;
     if (!std::isfinite(mu)) return route;
     // From the meeting cell back to the source, reversed; then on to the target.
     const Cell meeting_cell = window.cellAt(meeting);
@@ -205,6 +212,7 @@ class MeetingSearch {
     std::reverse(route.begin(), route.end());
     route.pop_back();  // the meeting cell again first on the way to the target
     appendRouteBack(window, meeting_cell, [&](std::size_t slot) { return sides[1].labels.moveInto(slot); }, route);
+    if (cost != nullptr) *cost = routeCost(grid, route);  // summed exactly, as A* sums it
     return route;
   }
 
@@ -238,10 +246,10 @@ class MeetingSearch {
   static constexpr int kSmallMeetingRound = 256;
   static constexpr std::size_t kSmallRoundCells = 32768;
   static constexpr int kMeetingRound = 2048;
-  detail::KeptLabels<2> labels_;  // the forward side's, the backward side's
+  detail::KeptLabels<2, float> labels_;  // the forward side's, the backward side's (MeetingSearch: float)
   // What the two sides write during a round sits on cache lines of its own.
-  alignas(64) detail::BucketQueue forward_open_;
-  alignas(64) detail::BucketQueue backward_open_;
+  alignas(64) detail::BucketQueue<detail::FloatBucketEntry> forward_open_;
+  alignas(64) detail::BucketQueue<detail::FloatBucketEntry> backward_open_;
   struct alignas(64) RoundCells {
     std::vector<std::uint32_t> cells;
   };

@@ -46,7 +46,8 @@ inline int lowestBit(unsigned bits) { return __builtin_ctz(bits); }
 // cost `cost`) that the move reaches more cheaply than its label says, and hands it to
 // on_label(slot, cell, cost). A move costs by the cell it enters; with `reverse_costs` by the
 // cell it leaves (the real move goes the other way: costs of routes *to* the source).
-// `Labels`: cost(slot) (+infinity when not reached) and label(slot, cost, move).
+// `Labels`: cost(slot) (+infinity when not reached), label(slot, cost, move) and kept(cost),
+// the cost as the labels keep it (rounded to float by the meeting search's).
 template <class Labels, class OnLabel>
 void relaxMoves(const CostGrid& grid, const SearchNeighbourhood& around, std::uint32_t slot, Cell here, double cost,
                 bool reverse_costs, Labels& labels, const OnLabel& on_label) {
@@ -54,7 +55,7 @@ void relaxMoves(const CostGrid& grid, const SearchNeighbourhood& around, std::ui
   for (unsigned moves = around.movesFrom(here); moves != 0; moves &= moves - 1) {
     const int d = lowestBit(moves);
     const std::uint32_t j = around.slotTowards(slot, d);
-    const double g = cost + grid.moveCostInto(reverse_costs ? index : around.indexTowards(index, d), d);
+    const double g = labels.kept(cost + grid.moveCostInto(reverse_costs ? index : around.indexTowards(index, d), d));
     if (g >= labels.cost(j)) continue;
     labels.label(j, g, static_cast<std::uint8_t>(d));
     on_label(j, step(here, d), g);

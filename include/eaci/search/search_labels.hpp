@@ -17,25 +17,32 @@ namespace eaci {
 namespace detail {
 
 // One set of labels as a search sees it: a slot's cost and move belong to this search when its
-// stamp is this search's generation; generation 0 is no search's.
+// stamp is this search's generation; generation 0 is no search's. `Cost`: how a cost is kept,
+// double (A*: exact sums) or float (the search that meets in the middle: half the memory; a
+// label is the sum rounded to float at every move, kept(), so that the search compares and
+// stores the same numbers).
+template <class Cost = double>
 struct StampedLabels {
-  double* costs;
+  Cost* costs;
   std::uint8_t* moves;
   std::uint16_t* generations;
   std::uint16_t generation;
   double cost(std::uint32_t slot) const {
-    return generations[slot] == generation ? costs[slot] : std::numeric_limits<double>::infinity();
+    return generations[slot] == generation ? static_cast<double>(costs[slot]) : std::numeric_limits<double>::infinity();
   }
+  // A route cost as these labels keep it.
+  static double kept(double c) { return static_cast<double>(static_cast<Cost>(c)); }
   std::uint8_t moveInto(std::size_t slot) const { return moves[slot]; }
+  // `c` as kept() gives it.
   void label(std::uint32_t slot, double c, std::uint8_t move) {
-    costs[slot] = c;
+    costs[slot] = static_cast<Cost>(c);
     moves[slot] = move;
     generations[slot] = generation;
   }
 };
 
 // `Sets` sets of label arrays (one per side of a search) numbered by one count of searches.
-template <int Sets>
+template <int Sets, class Cost = double>
 class KeptLabels {
  public:
   // Room for `slots` labels in every set, none of them this search's. Costs and moves are read
@@ -52,9 +59,9 @@ class KeptLabels {
     }
   }
   // Set `set`'s labels of the current search.
-  StampedLabels of(int set) const {
+  StampedLabels<Cost> of(int set) const {
     const Arrays& a = sets_[static_cast<std::size_t>(set)];
-    return StampedLabels{a.costs.get(), a.moves.get(), a.generations.get(), generation_};
+    return StampedLabels<Cost>{a.costs.get(), a.moves.get(), a.generations.get(), generation_};
   }
 
  private:
@@ -62,7 +69,7 @@ class KeptLabels {
     void operator()(void* memory) const { std::free(memory); }
   };
   struct Arrays {
-    std::unique_ptr<double[]> costs;
+    std::unique_ptr<Cost[]> costs;
     std::unique_ptr<std::uint8_t[]> moves;
     std::unique_ptr<std::uint16_t[], FreeDeleter> generations;
     // Every label of generation 0: no search's. The stamps come zeroed from calloc, which
@@ -75,7 +82,7 @@ class KeptLabels {
       moves.reset();
       generations.reset(static_cast<std::uint16_t*>(std::calloc(slots, sizeof(std::uint16_t))));
       if (!generations) throw std::bad_alloc();
-      costs.reset(new double[slots]);
+      costs.reset(new Cost[slots]);
       moves.reset(new std::uint8_t[slots]);
     }
   };
