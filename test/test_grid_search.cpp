@@ -197,8 +197,8 @@ TEST(GridSearch, WindowPastTheGridEdgeStaysOnTheGrid) {
   EXPECT_TRUE(std::isinf(workspace.at(Cell{3, 3})));
 }
 
-// The workspace numbers its searches in 16 bits: when the numbers wrap round, the labels of the
-// search 65 536 searches back must not come back.
+// The workspace numbers its searches in 12 bits: when the numbers wrap round, the labels of the
+// search 4095 searches back, which had the number the search now has, must not come back.
 TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
   const CostGrid grid = CostGrid::fromRows({{0, 0, 1}}, false);
   GridSearchWorkspace workspace;
@@ -207,7 +207,7 @@ TEST(GridSearch, WorkspaceForgetsOldLabelsWhenItsSearchNumbersWrap) {
   workspace.search(grid, request);
   ASSERT_TRUE(workspace.reached(Cell{0, 1}));
   request.source = Cell{0, 2};  // blocked: reaches nothing
-  for (int k = 0; k < 65535; ++k) workspace.search(grid, request);
+  for (int k = 0; k < eaci::detail::kMaxGeneration; ++k) workspace.search(grid, request);
   EXPECT_FALSE(workspace.reached(Cell{0, 1}));
   EXPECT_FALSE(workspace.reached(Cell{0, 0}));
   request.source = Cell{0, 1};
@@ -270,13 +270,14 @@ TEST(GridSearch, RouteThatMeetsInTheMiddleCostsWhatAnIndependentDijkstraSays) {
   EXPECT_GT(routes, 100);
 }
 
-// Its two sides' labels share one count of 16-bit search numbers: after a wrap no old label
+// Its two sides' labels share one count of 12-bit search numbers: after a wrap no old label
 // may join a route.
 TEST(GridSearch, RouteThatMeetsInTheMiddleForgetsOldLabelsWhenTheNumbersWrap) {
   const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 1, 0}}, false);
   MeetingSearch search;
   ASSERT_EQ(search.cheapestRoute(grid, Cell{0, 0}, Cell{0, 2}).size(), 3u);
-  for (int k = 0; k < 65535; ++k) search.cheapestRoute(grid, Cell{0, 3}, Cell{0, 0});  // blocked: reaches nothing
+  for (int k = 0; k < eaci::detail::kMaxGeneration; ++k)
+    search.cheapestRoute(grid, Cell{0, 3}, Cell{0, 0});  // blocked: reaches nothing
   double cost = 0.0;
   EXPECT_TRUE(search.cheapestRoute(grid, Cell{0, 4}, Cell{0, 0}, 1, &cost).empty());
   EXPECT_TRUE(std::isinf(cost));
