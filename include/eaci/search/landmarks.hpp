@@ -192,6 +192,13 @@ class Landmarks {
     to_a = static_cast<double>(bound_a) * shrink_;
     to_b = static_cast<double>(bound_b) * shrink_;
   }
+  // Some landmark reaches the cell whose landmark distances (of()) these are: it lies in the
+  // part of the map the landmarks were chosen in (every landmark reaches it then).
+  bool reaches(const float* c) const {
+    for (int k = 0; k < count_; ++k)
+      if (!std::isnan(c[k])) return true;
+    return false;
+  }
   // The `count()` landmark distances of grid cell `index`.
   const float* of(std::size_t index) const { return distance_.data() + index * static_cast<std::size_t>(count_); }
 

@@ -50,20 +50,25 @@ struct MeetingBounds {
     if (landmarks == nullptr) return;
     source_marks = landmarks->of(s_index);
     target_marks = landmarks->of(t_index);
+    if (!landmarks->reaches(source_marks)) {  // another part of the map than the landmarks': octile alone
+      landmarks = nullptr;
+      return;
+    }
     span = std::max(span, landmarks->lowerBound(source_marks, target_marks));
   }
 
   // Half of (bound to the target - bound from the source) at cell `c` of grid index `index`:
-  // the potential the forward side adds and the backward side subtracts.
+  // the potential the forward side adds and the backward side subtracts. With landmarks their
+  // bounds alone: on a cost map they are the stronger almost everywhere, and taking the larger
+  // of them and the octile distance at every label cost more than it saved (7 % of a plan on
+  // rooms of 0.16 M cells).
   double halfDifference(Cell c, std::size_t index) const {
-    double from_source = octileDistance(c, source), to_target = octileDistance(c, target);
     if (landmarks != nullptr) {
       double marks_source, marks_target;
       landmarks->lowerBounds(landmarks->of(index), source_marks, target_marks, marks_source, marks_target);
-      from_source = std::max(from_source, marks_source);
-      to_target = std::max(to_target, marks_target);
+      return 0.5 * (marks_target - marks_source);
     }
-    return 0.5 * (to_target - from_source);
+    return 0.5 * (octileDistance(c, target) - octileDistance(c, source));
   }
 };
 
