@@ -837,6 +837,29 @@ TEST(Landmarks, RouteThatMeetsInTheMiddleWithLandmarksCostsWhatAnIndependentDijk
   EXPECT_GT(routes, 40);
 }
 
+// A route in a part of the map the landmarks do not reach (they are chosen in the part of the
+// free cell in the middle): their bounds say nothing there, and the search falls back on the
+// octile distance, taking exactly the cells the search without landmarks takes.
+TEST(Landmarks, ARouteWhereNoLandmarkReachesSearchesByTheOctileBound) {
+  CostGrid grid(100, 100, false);
+  for (int r = 0; r < 100; ++r) grid.setBlocked(Cell{r, 80}, true);  // columns 81-99: a part of their own
+  MeetingSearch plain, with_landmarks;
+  with_landmarks.useLandmarks(4);
+  const auto made = landmarksOnceMade(*with_landmarks.landmarkCache(), grid);
+  ASSERT_NE(made, nullptr);
+  ASSERT_TRUE(made->reaches(made->of(grid.index(Cell{50, 40}))));
+  ASSERT_FALSE(made->reaches(made->of(grid.index(Cell{5, 85}))));
+  const Cell source{5, 85}, target{95, 95};
+  double cost = 0.0, cost_with = 0.0;
+  const std::size_t moves = plain.cheapestRoute(grid, source, target, 1, &cost).size();
+  with_landmarks.cheapestRoute(grid, source, target, 1, &cost_with);
+  EXPECT_FALSE(with_landmarks.usedLandmarks());
+  const double expected = referenceCosts(grid, CellWindow::whole(grid), source, false)[grid.index(target)];
+  EXPECT_NEAR(cost, expected, floatLabelSlack(expected, moves));
+  EXPECT_EQ(cost_with, cost);
+  EXPECT_EQ(with_landmarks.expandedCells(), plain.expandedCells());
+}
+
 // Across a long wall the octile bound says "10 cells" while the route goes round the wall's far
 // end: with landmarks the search takes far fewer cells off its open lists for the same cost.
 TEST(Landmarks, SearchAcrossAWallTakesFewerCellsWithThem) {
