@@ -47,7 +47,6 @@ class SparseCellMap {
     return values_[static_cast<std::size_t>(block) * kBlockCells + cellInBlock(c)];
   }
 
-  const CellWindow& window() const { return window_; }
   // Values held: kBlockCells per block made (for tests and memory accounting).
   std::size_t valuesHeld() const { return values_.size(); }
 
