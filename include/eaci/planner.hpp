@@ -305,8 +305,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
       }
       if (!reachable) return unreachable();
     }
-    GridSearchWorkspace* astar_workspace = options.workspace ? &options.workspace->astar : nullptr;
-    MeetingSearch* meeting_search = options.workspace ? &options.workspace->meeting : nullptr;
+    RouteSearchBuffers search_buffers;
+    if (options.workspace) search_buffers = {&options.workspace->astar, &options.workspace->meeting,
+                                             &options.workspace->turning};
     ColonyWorkspace* colony_workspace = options.workspace ? &options.workspace->colony : nullptr;
     // The set-up ends where the colony shows its initial field (iteration 0).
     std::optional<Clock::time_point> setup_done;
@@ -316,8 +317,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     };
     ColonyResult colony =
         algorithm == Algorithm::kEaci
-            ? solveEaci(grid, start, goal, params, options.should_stop, observer, astar_workspace, meeting_search,
-                        colony_workspace)
+            ? solveEaci(grid, start, goal, params, options.should_stop, observer, search_buffers, colony_workspace)
         : algorithm == Algorithm::kMaaco
             ? solveMaaco(grid, start, goal, params, options.should_stop, observer, colony_workspace)
             : solveClassicAco(grid, start, goal, params, options.should_stop, observer, colony_workspace);

@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
   front_cmd->add_option("--threads", front.threads, "threads per EACI plan (0 = all cores)")->check(CLI::Range(0, 1024));
   front_cmd->add_option("--turn-costs", front.turn_costs, "turn_cost values (per radian) of the exact search")
       ->delimiter(',')->check(CLI::Range(0.0, 1e6));
+  front_cmd->add_option("--eaci-turn-costs", front.eaci_turn_costs, "turn_cost values (per radian) EACI runs with")
+      ->delimiter(',')->check(CLI::Range(0.0, 1e6));
 
   eaci_bench::GeneratedOptions scale, deadline;
   deadline.sizes = {800};

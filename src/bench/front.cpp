@@ -10,7 +10,7 @@
 //                        turn_cost sweep only finds the front's supported (convex-hull) points,
 //                        this finds them all;
 //   variant "eaci-geodesic", "eaci-paper" - EACI's routes, seeds 1..runs, the paper comparison's
-//                        parameters (as `paper`).
+//                        parameters (as `paper`), for each of eaci_turn_costs; extra.turn_cost.
 // Corner angle: run.total_turn_deg, the grid route's heading change (as the paper tables' angle
 // column in `paper`), not the smoothed route's.
 #include <algorithm>
@@ -86,13 +86,18 @@ void runFront(const FrontOptions& options, RecordWriter& out) {
       }
     }
 
-    // EACI's routes.
-    for (const std::string strategy : {"geodesic", "paper"}) {
-      for (int k = 1; k <= options.runs; ++k) {
-        progress.show(spec.name + " | eaci " + strategy, k, options.runs);
-        eaci::Parameters params = frontParameters(static_cast<std::uint64_t>(k), options.threads);
-        eaci::setParameter(params, "island_strategy", strategy);
-        append("eaci-" + strategy, params, timedPlan(request(eaci::Algorithm::kEaci, params), false, true), {});
+    // EACI's routes, scoring turns at each of a few turn_cost values (0: as the paper).
+    for (const double turn_cost : options.eaci_turn_costs) {
+      for (const std::string strategy : {"geodesic", "paper"}) {
+        for (int k = 1; k <= options.runs; ++k) {
+          progress.show(spec.name + " | eaci " + strategy + " turn_cost " + eaci::formatNumber(turn_cost), k,
+                        options.runs);
+          eaci::Parameters params = frontParameters(static_cast<std::uint64_t>(k), options.threads);
+          eaci::setParameter(params, "island_strategy", strategy);
+          params.turn_cost = turn_cost;
+          append("eaci-" + strategy, params, timedPlan(request(eaci::Algorithm::kEaci, params), false, true),
+                 {{"turn_cost", turn_cost}});
+        }
       }
     }
   }

@@ -24,6 +24,7 @@ struct FrontOptions {  // front: length against total corner angle on the paper'
   int runs = 20;      // EACI seeds 1..runs per map and island strategy
   int threads = 1;
   std::vector<double> turn_costs = {0, 0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 1, 1.5, 2, 3, 5, 10};  // per radian
+  std::vector<double> eaci_turn_costs = {0, 0.2, 0.5, 1};  // EACI's runs, per radian
 };
 
 struct GeneratedOptions {  // scale and deadline

@@ -10,7 +10,9 @@ namespace eaci {
 struct AntRoute {
   bool complete = false;              // reached E; a lost ant's route is incomplete
   double length = 0.0;                // cells: straight step 1, diagonal sqrt 2
-  double cost = 0.0;                  // L_k: the sum of its move costs (= length on a binary map)
+  // L_k: the sum of its move costs (= length on a binary map), plus turn_cost x its heading
+  // change in radians when turns are priced (WalkSetup::priceTurns)
+  double cost = 0.0;
   std::vector<std::uint32_t> cells;   // cells of the colony's region (ColonyRegion numbers), start first
   std::vector<std::uint8_t> dirs;     // dirs[k]: direction of the move cells[k] -> cells[k+1]
 

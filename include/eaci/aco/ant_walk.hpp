@@ -95,8 +95,16 @@ struct WalkSetup {
   std::vector<LegCostField> leg_cost;
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   InversePower eta_power{7.0};                // x -> x^-beta
-  // sigma of Eq. 17 by [previous direction + 1][direction]; row 0: no previous move, sigma = 0.
+  // sigma of Eq. 17 by [previous direction + 1][direction], plus the price of the turn when
+  // turns are priced (priceTurns); row 0: no previous move, sigma = 0.
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
+  // The price of a turn of k 45-degree steps, turn_cost x k x pi/4 (issue #30), which each move
+  // adds to the route's cost L_k; all 0 unless priceTurns was called with turn_cost > 0.
+  std::array<double, 5> turn_price{};
+  bool prices_turns = false;
+  // Per waypoint: the direction its route leaves it in (geodesic islands: the cheapest route's,
+  // setExitDirections), -1 where unknown; read only when turns are priced.
+  std::vector<std::int8_t> exit_dir;
   // d_jg (costToWaypoint) tabulated per waypoint over the region (filled by
   // tabulateCostsToWaypoints() when it fits): one load per candidate instead of a computation.
   std::vector<std::vector<float>> cost_to_waypoint_table;
@@ -124,6 +132,40 @@ struct WalkSetup {
       for (int from = 0; from < kDirections; ++from)
         for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] = turningCost(from, to, epsilon);
     tabulateCostsToWaypoints();
+  }
+
+  // Prices turning (issue #30): with turn_cost > 0 every route's L_k is its combined cost (the
+  // move costs plus turn_cost x its heading change in radians, combinedRouteCost), and the
+  // heuristic's d_jg + sigma counts the candidate move's turn at that price too, so the walk,
+  // the update and the ranking of routes score one objective. turn_cost 0 changes nothing.
+  void priceTurns(double turn_cost) {
+    if (!(turn_cost > 0)) return;
+    prices_turns = true;
+    for (int k = 0; k <= 4; ++k) turn_price[k] = turn_cost * k * kTurnStepRadians;
+    for (int from = 0; from < kDirections; ++from)
+      for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] += turn_price[turnSteps(from, to)];
+  }
+
+  // The direction the route `route` (S .. E, through every waypoint in order, as geodesic
+  // islands are) leaves each waypoint in; the heuristic then prices the turn at a leg's end.
+  void setExitDirections(const CellPath& route) {
+    exit_dir.assign(waypoints.size(), -1);
+    std::size_t z = 0;
+    for (std::size_t k = 0; k + 1 < route.size() && z + 1 < waypoints.size(); ++k)
+      if (route[k] == waypoints[z]) exit_dir[z++] = static_cast<std::int8_t>(directionBetween(route[k], route[k + 1]));
+  }
+
+  // With turns priced, the turns a move into `to` in direction `dir` commits the ant to at its
+  // leg's end: entering the leg's goal `target` (`to` itself or a neighbour of it: the leg's
+  // last step is then known) and leaving it in its exit direction. A two-step look-ahead: on
+  // geodesic islands, at most two moves apart, it sees every turn of a leg.
+  double legEndTurnPrice(Cell to, std::size_t target, int dir) const {
+    const Cell island = waypoints[target];
+    const int exit = exit_dir.empty() ? -1 : exit_dir[target];
+    if (to == island) return exit >= 0 ? turn_price[turnSteps(dir, exit)] : 0.0;
+    const int last = directionBetween(to, island);
+    if (last < 0) return 0.0;
+    return turn_price[turnSteps(dir, last)] + (exit >= 0 ? turn_price[turnSteps(last, exit)] : 0.0);
   }
 
   // d_jg: what reaching waypoint `target` from `next` costs: the leg's exact route cost
@@ -160,6 +202,7 @@ struct WalkSetup {
     double distance =
         cost_to_waypoint_table.empty() ? costToWaypoint(to, target) : cost_to_waypoint_table[target][next];
     if (!leg_cost.empty()) distance += grid->moveCostInto(grid->index(to), dir) - stepLength(dir);
+    if (prices_turns) distance += legEndTurnPrice(to, target, dir);
     return distance + sigma;
   }
 
@@ -265,6 +308,7 @@ class AntWalker {
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);
       route.cost += grid.moveCostInto(grid.index(here), chosen);
+      if (setup.prices_turns && previous_dir >= 0) route.cost += setup.turn_price[turnSteps(previous_dir, chosen)];
       visit(next);
       previous_dir = chosen;
       current = next;

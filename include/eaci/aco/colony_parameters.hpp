@@ -82,6 +82,14 @@ struct ColonyParameters {
   // knows before the ants start: 0 = once a route is as cheap (no later iteration could beat
   // it); 0.01 = within 1 %. The paper's islands and classic ACO know no such cost.
   double stop_gap = 0.0;
+  // The price of turning (issue #30), every planner's: a route's combined cost is its cost
+  // (Parameters: the move costs) plus turn_cost x its heading change in radians, summed over
+  // consecutive moves (a 45-degree corner adds turn_cost x pi/4; the first move turns
+  // nothing). 0 = routes priced by their cost alone, as before, seed for seed. A* (--algorithm
+  // astar) minimises the combined cost whenever turn_cost > 0 (search/heading_search.hpp); the
+  // colonies score it as their L_k, in the walk's heuristic and in the pheromone update, and
+  // geodesic islands sit on its cheapest route. docs/algorithm.md says why radians.
+  double turn_cost = 0.0;
   std::uint64_t seed = 1;
   int threads = 1;  // ants of one iteration spread over this many threads; 0 = all cores
 };

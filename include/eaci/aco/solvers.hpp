@@ -19,6 +19,7 @@
 #include "eaci/aco/islands.hpp"
 #include "eaci/search/reachability.hpp"
 #include "eaci/search/astar.hpp"
+#include "eaci/search/heading_search.hpp"
 #include "eaci/search/meeting_search.hpp"
 
 namespace eaci {
@@ -39,7 +40,15 @@ struct IslandPlan {
   std::vector<Cell> islands;                   // L_1 = S, ..., L_N = E
   std::vector<LegCostField> leg_cost;  // empty: the paper's straight-line d_jg
   CellPath route;                              // geodesic: the cheapest route S .. E the islands are on
-  double route_cost = std::numeric_limits<double>::infinity();  // its cost (CostGrid::moveCost)
+  // its cost (CostGrid::moveCost); with turn_cost > 0 its combined cost (combinedRouteCost)
+  double route_cost = std::numeric_limits<double>::infinity();
+};
+
+// The exact searches' buffers a caller keeps between plans (any may be null: the call's own).
+struct RouteSearchBuffers {
+  GridSearchWorkspace* astar = nullptr;  // A* on maps under kTwoSidedSearchCells
+  MeetingSearch* meeting = nullptr;      // the search that meets in the middle from there on
+  HeadingSearch* turning = nullptr;      // the (cell, heading) search, turn_cost > 0
 };
 
 // Geodesic islands find their route with the search that meets in the middle
@@ -52,15 +61,14 @@ constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
 // Islands for the chosen strategy, both from the auxiliary map (Eq. 12):
 // kPaper: Eq. 13-15; kGeodesic: r_s apart (at most island_spacing_max) on a cheapest route
 // (A*), with exact leg costs. Geodesic islands only ask Eq. 12 about cells of the route, so
-// they never build the auxiliary map.
-// `astar`, `meeting`: the exact searches' buffers (A* on smaller maps, the search that meets
-// in the middle from kTwoSidedSearchCells on), kept by the caller between plans (null: their own).
+// they never build the auxiliary map. With turn_cost > 0 the route is a cheapest one under the
+// combined objective (HeadingSearch), the one the colony scores (issue #30).
+// `buffers`: the exact searches' buffers, kept by the caller between plans.
 // `stop`: ticked by every step's loops (auxiliary map, flood, island scan, the search, the leg
 // fields); once it says stop the plan is unfinished (the caller reads stop->stopped()): a
 // geodesic plan keeps its route when the search had finished.
 inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
-                              GridSearchWorkspace* astar = nullptr, MeetingSearch* meeting = nullptr,
-                              StopPoll* stop = nullptr) {
+                              const RouteSearchBuffers& buffers = {}, StopPoll* stop = nullptr) {
   if (params.island_strategy == IslandStrategy::kPaper) {
     const CostGrid auxiliary = auxiliaryMap(grid, start, goal, AuxiliaryBorder::kFree, stop);
     if (stop != nullptr && stop->stopped()) return {};
@@ -69,13 +77,19 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
     return {paperIslands(auxiliary, reachable, start, goal, params.islands, stop), {}, {}};
   }
   IslandPlan plan;
-  if (grid.cellCount() >= kTwoSidedSearchCells) {
+  if (params.turn_cost > 0 && grid.cellCount() <= kMaxHeadingSearchCells) {
+    HeadingSearch own_search;
+    TurningPath cheapest = (buffers.turning ? *buffers.turning : own_search)
+                               .cheapestPath(grid, start, goal, params.turn_cost, stop);
+    plan.route = std::move(cheapest.path);
+    plan.route_cost = cheapest.combined_cost;
+  } else if (grid.cellCount() >= kTwoSidedSearchCells) {
     MeetingSearch own_search;
-    MeetingSearch& search = meeting ? *meeting : own_search;
+    MeetingSearch& search = buffers.meeting ? *buffers.meeting : own_search;
     plan.route = search.cheapestRoute(grid, start, goal, resolveThreadCount(params.threads), &plan.route_cost, stop);
   } else {
     GridSearchWorkspace own_workspace;
-    CheapestPath cheapest = cheapestPath(grid, start, goal, astar ? *astar : own_workspace, stop);
+    CheapestPath cheapest = cheapestPath(grid, start, goal, buffers.astar ? *buffers.astar : own_workspace, stop);
     plan.route = std::move(cheapest.path);
     plan.route_cost = cheapest.cost;
   }
@@ -103,12 +117,12 @@ inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands
 // the set-up steps and every few thousand cells inside them (StopPoll); stopped there, the
 // result has no colony route and an empty pheromone field (geodesic islands: search_route is
 // the route when the search had finished).
-// `astar_workspace`, `meeting_search`, `colony_workspace`: buffers and threads kept by the caller between plans
+// `search_buffers`, `colony_workspace`: buffers and threads kept by the caller between plans
 // (null: this call's own). The result's region and pheromone field hold the colony
 // workspace's memory; a caller that keeps the workspace hands them back to it when done.
 inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
-                              GridSearchWorkspace* astar_workspace = nullptr, MeetingSearch* meeting_search = nullptr,
+                              const RouteSearchBuffers& search_buffers = {},
                               ColonyWorkspace* colony_workspace = nullptr) {
   ColonyResult result;
   StopPoll setup_poll(should_stop, 0);  // one counter through all the set-up steps
@@ -116,7 +130,7 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
     if (setup_poll.stopped() || setup_poll.askNow()) result.run.interrupted = true;
     return result.run.interrupted;
   };
-  IslandPlan islands = planIslands(grid, start, goal, params, astar_workspace, meeting_search, &setup_poll);
+  IslandPlan islands = planIslands(grid, start, goal, params, search_buffers, &setup_poll);
   if (setup_poll.stopped()) {  // geodesic: the search's route if it had finished (else empty)
     result.run.interrupted = true;
     if (!islands.route.empty()) {
@@ -148,6 +162,8 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_cost));
+  setup.priceTurns(params.turn_cost);
+  if (setup.prices_turns && !islands.route.empty()) setup.setExitDirections(islands.route);
   if (observer) observer(0, result.pheromone, setup.region);
   Colony<EaciRules> colony(setup, result.pheromone, params, EaciRules(params, euclidean(start, goal)),
                            islands.route_cost, colony_workspace);
@@ -178,6 +194,7 @@ ColonyResult solveOnWholeMap(const CostGrid& grid, Cell start, Cell goal, const 
   }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
                   params.beta, params.epsilon);
+  setup.priceTurns(params.turn_cost);
   if (observer) observer(0, result.pheromone, setup.region);
   Colony<Rules> colony(setup, result.pheromone, params, std::move(rules), std::numeric_limits<double>::infinity(),
                        colony_workspace);

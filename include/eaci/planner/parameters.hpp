@@ -43,12 +43,7 @@ struct Parameters : ColonyParameters {
   // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
   // turns it on.
   bool smooth_path = false;
-  // The price of turning (issue #30): a route's combined cost is its cost (above) plus
-  // turn_cost x its heading change in radians, summed over consecutive moves (a 45-degree
-  // corner adds turn_cost x pi/4; the first move turns nothing). 0 = routes priced by their
-  // cost alone, as before. A* (--algorithm astar) minimises the combined cost whenever
-  // turn_cost > 0 (search/heading_search.hpp); docs/algorithm.md says why radians.
-  double turn_cost = 0.0;
+  // turn_cost, the price of turning, is the colonies' too: ColonyParameters.
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.

@@ -1,0 +1,148 @@
+// The colonies score turning (issue #30): with turn_cost > 0 an ant's L_k is its combined cost,
+// the heuristic prices the candidate move's turn, and the colonies reach the combined optimum.
+// Expectations are hand-computed, or from the exact front (src/bench/exact_front.hpp, a Dijkstra
+// written apart from the planners and checked against a brute force in test_exact_front.cpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "../src/bench/exact_front.hpp"
+#include "eaci/aco/ant_walk.hpp"
+#include "eaci/planner.hpp"
+#include "test_support.hpp"
+
+using eaci::AntRoute;
+using eaci::Cell;
+using eaci::CostGrid;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kEast = 0, kNorth = 2, kNorthEast = 1;
+}  // namespace
+
+TEST(ColonyTurns, AnAntsRouteCostCountsItsTurnsAtTheirPrice) {
+  // A one-cell-wide L: (2,0) -> (2,3) east, then north to (0,3). Every ant that arrives walks
+  // these five straight moves with one right angle: cost 5 + turn_cost x pi/2.
+  const CostGrid grid = CostGrid::fromRows({{1, 1, 1, 0}, {1, 1, 1, 0}, {0, 0, 0, 0}}, false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  for (double turn_cost : {0.0, 0.3, 2.0}) {
+    eaci::WalkSetup setup(grid, field, {Cell{2, 0}, Cell{0, 3}}, eaci::HeuristicRule::kTurningAware, 7.0, 0.5);
+    setup.priceTurns(turn_cost);
+    eaci::AntWalker walker;
+    eaci::SplitMix64 rng = eaci::antStream(1, 1, 0);
+    AntRoute route;
+    walker.walk(setup, rng, route);
+    ASSERT_TRUE(route.complete);
+    EXPECT_NEAR(route.length, 5.0, 1e-12);
+    EXPECT_NEAR(route.cost, 5.0 + turn_cost * kPi / 2, 1e-12) << "turn_cost " << turn_cost;
+  }
+}
+
+TEST(ColonyTurns, TheHeuristicPricesTheCandidateMovesTurn) {
+  // Heading east at (2,2) of an open 5 x 9 map: going on east turns nothing, north-east 45
+  // degrees, north 90. d_jg + sigma (Eq. 16-17, epsilon per 45-degree step) gains turn_cost x
+  // the turn in radians; without a price it is as before. The goal is no neighbour of the
+  // cells these moves enter (no look-ahead at the leg's end: the next test).
+  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(5, std::vector<int>(9, 0)), false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  const double epsilon = 0.5, turn_cost = 0.8;
+  const Cell here{2, 2}, goal{0, 8};
+  eaci::WalkSetup plain(grid, field, {Cell{4, 0}, goal}, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
+  eaci::WalkSetup priced(grid, field, {Cell{4, 0}, goal}, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
+  priced.priceTurns(turn_cost);
+  const auto region_cell = [&](const eaci::WalkSetup& s, int dir) {
+    return s.region.regionIndex(eaci::step(here, dir));
+  };
+  const auto distance_from = [&](int dir) {  // Euclidean d_jg from the cell the move enters
+    const Cell to = eaci::step(here, dir);
+    return std::hypot(to.row - goal.row, to.col - goal.col);
+  };
+  const struct { int dir; int steps; } moves[] = {{kEast, 0}, {kNorthEast, 1}, {kNorth, 2}};
+  for (const auto& m : moves) {
+    EXPECT_NEAR(plain.heuristicDistance(here, region_cell(plain, m.dir), 1, kEast, m.dir),
+                distance_from(m.dir) + epsilon * m.steps, 1e-6);
+    EXPECT_NEAR(priced.heuristicDistance(here, region_cell(priced, m.dir), 1, kEast, m.dir),
+                distance_from(m.dir) + epsilon * m.steps + turn_cost * m.steps * kPi / 4, 1e-6);
+  }
+  // The first move of a route turns nothing, priced or not.
+  EXPECT_NEAR(priced.heuristicDistance(here, region_cell(priced, kNorth), 1, -1, kNorth), distance_from(kNorth), 1e-6);
+}
+
+TEST(ColonyTurns, TheHeuristicLooksAheadToTheTurnsAtTheLegsEnd) {
+  // Islands S = (3,0), (1,1), E = (0,2) on the route (3,0) N (2,0) NE (1,1) NE (0,2): the route
+  // leaves (1,1) heading north-east. From S, north to (2,0) commits the ant to NE into (1,1)
+  // (a 45-degree turn) and on NE (none): 1 step. North-east to (2,1) commits it to N into (1,1)
+  // (45) and NE out (45): 2 steps. Entering an island prices the turn onto its exit direction.
+  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(4, std::vector<int>(4, 0)), false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  const double turn_cost = 0.8, epsilon = 0.5;
+  const std::vector<Cell> islands{{3, 0}, {1, 1}, {0, 2}};
+  eaci::WalkSetup plain(grid, field, islands, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
+  eaci::WalkSetup priced(grid, field, islands, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
+  priced.priceTurns(turn_cost);
+  priced.setExitDirections({{3, 0}, {2, 0}, {1, 1}, {0, 2}});
+  const auto extra = [&](Cell from, int previous_dir, int dir) {
+    const std::uint32_t next = priced.region.regionIndex(eaci::step(from, dir));
+    return priced.heuristicDistance(from, next, 1, previous_dir, dir) -
+           plain.heuristicDistance(from, next, 1, previous_dir, dir);
+  };
+  EXPECT_NEAR(extra(Cell{3, 0}, -1, kNorth), turn_cost * kPi / 4, 1e-6);
+  EXPECT_NEAR(extra(Cell{3, 0}, -1, kNorthEast), turn_cost * kPi / 2, 1e-6);
+  // Into the island from (2,1) heading north: the turn onto NE out of it.
+  EXPECT_NEAR(extra(Cell{2, 1}, kNorthEast, kNorth), turn_cost * (kPi / 4 + kPi / 4), 1e-6);
+  // Into it from (2,0) heading north, moving north-east: the move's own turn, none out.
+  EXPECT_NEAR(extra(Cell{2, 0}, kNorth, kNorthEast), turn_cost * kPi / 4, 1e-6);
+}
+
+TEST(ColonyTurns, ADearTurnMakesEveryColonyTakeTheDearerStraightRoute) {
+  // Row 0 from S to G runs through three cells of cost 50 (a move into one costs 4 x its length
+  // under neutral 50, factor 3): straight on costs 4 + 4 + 4 + 1 = 13 and turns nothing. Round
+  // them through row 1 costs 2 + 2 sqrt 2 and turns at least 90 degrees. Optimum:
+  // min(13, 2 + 2 sqrt 2 + turn_cost x pi/2): round at turn_cost 0 and 1, straight at 10.
+  CostGrid grid(5, 2, false);
+  for (int c = 1; c <= 3; ++c) grid.setCost(Cell{0, c}, 50);
+  const double round = 2.0 + 2.0 * std::sqrt(2.0);
+  // (MAACO's heuristic sees no cell costs: it misses the cheap round route even unpriced.)
+  for (eaci::Algorithm algorithm : {eaci::Algorithm::kEaci, eaci::Algorithm::kAco}) {
+    for (double turn_cost : {0.0, 1.0, 10.0}) {
+      const double optimum = std::min(13.0, round + turn_cost * kPi / 2);
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        eaci::Parameters p;
+        p.turn_cost = turn_cost;
+        p.seed = seed;
+        p.max_iterations = 30;
+        const eaci::PlanResult r = eaci::plan(grid, Cell{0, 0}, Cell{0, 4}, algorithm, p);
+        ASSERT_EQ(r.status, eaci::PlanStatus::kSuccess) << r.error;
+        EXPECT_NEAR(r.combined_cost, optimum, 1e-9)
+            << eaci::toString(algorithm) << " turn_cost " << turn_cost << " seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(ColonyTurns, EaciReachesTheCombinedOptimumOfThePaperMapsFromTheExactFront) {
+  // The combined optimum, min over routes of length + turn_cost x turn, is reached on the exact
+  // front (a route off it is dominated); on these binary maps cost is length. EACI with the
+  // project's defaults (geodesic islands) and the paper tables' move rule, seeds 1-3.
+  for (const eaci::test::PaperCase& pc : eaci::test::paperCases()) {
+    const CostGrid grid = eaci::test::paperMap(pc.file, true);
+    const std::vector<eaci_bench::FrontPoint> front = eaci_bench::exactFront(grid, pc.start, pc.goal, 40);
+    ASSERT_FALSE(front.empty()) << pc.file;
+    for (double turn_cost : {0.2, 0.5, 1.0}) {
+      double optimum = std::numeric_limits<double>::infinity();
+      for (const eaci_bench::FrontPoint& f : front)
+        optimum = std::min(optimum, f.length + turn_cost * f.turn_steps * kPi / 4);
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        eaci::Parameters p;
+        p.allow_corner_cutting = true;
+        p.turn_cost = turn_cost;
+        p.seed = seed;
+        const eaci::PlanResult r = eaci::plan(grid, pc.start, pc.goal, eaci::Algorithm::kEaci, p);
+        ASSERT_EQ(r.status, eaci::PlanStatus::kSuccess) << r.error;
+        EXPECT_LE(r.combined_cost, optimum * 1.01) << pc.file << " turn_cost " << turn_cost << " seed " << seed;
+        EXPECT_GE(r.combined_cost, optimum - 1e-9) << pc.file;  // nothing beats the optimum
+      }
+    }
+  }
+}
