@@ -380,8 +380,8 @@ int run(int argc, char** argv) {
   app.add_option("--seed", o.seed, "random seed (overrides --params and --set)");
   app.add_option("--turn-cost", o.turn_cost,
                  "the cost of one radian of heading change between consecutive moves, added to a route's cost "
-                 "(= --set turn_cost=..., overrides --params and --set; default 0); astar then finds the cheapest "
-                 "route under cost + turn_cost x turn");
+                 "(= --set turn_cost=..., overrides --params and --set; default 0); every algorithm then minimises "
+                 "cost + turn_cost x turn, astar exactly");
   app.add_option("--params", o.params_file, "flat YAML mapping of parameter names to values");
   app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
       ->allow_extra_args(false);

@@ -45,8 +45,8 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["length"] = has_length ? json(r.length) : json(nullptr);
   // The route's cost (the cost model of the parameters); the length on a map without costs.
   j["cost"] = has_length && std::isfinite(r.cost) ? json(r.cost) : json(nullptr);
-  // cost + turn_cost x the route's heading change in radians (the objective A* minimises when
-  // turn_cost > 0); equal to cost when turn_cost is 0.
+  // cost + turn_cost x the route's heading change in radians (the objective every planner minimises
+  // when turn_cost > 0); equal to cost when turn_cost is 0.
   j["combined_cost"] = has_length && std::isfinite(r.combined_cost) ? json(r.combined_cost) : json(nullptr);
   j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
   // Clearance (route cell centre to nearest obstacle cell centre of the map, metres; null without

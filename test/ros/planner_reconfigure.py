@@ -176,6 +176,28 @@ class PlannerReconfigure(unittest.TestCase):
         self.assertGreater(len(received), before, "not published although publish_plan is true")
         sub.unregister()
 
+    def test_6_turn_cost(self):
+        # The price of turning reaches the planner at run time: unsmoothed, so that the returned
+        # poses are the grid route's cells, whose heading changes are what turn_cost prices. The
+        # lab route from START to GOAL cannot be straight, so a dear turn leaves fewer of them.
+        def total_turn(poses):
+            headings = [math.atan2(b.pose.position.y - a.pose.position.y, b.pose.position.x - a.pose.position.x)
+                        for a, b in zip(poses, poses[1:])]
+            return sum(abs(math.atan2(math.sin(h2 - h1), math.cos(h2 - h1))) for h1, h2 in zip(headings, headings[1:]))
+
+        self.client.update_configuration({"smooth_path": False, "turn_cost": 0.0})
+        free = self.plan()
+        self.assert_reaches(free)
+        config = self.client.update_configuration({"turn_cost": 50.0})
+        self.assertEqual(config["turn_cost"], 50.0)
+        dear = self.plan()
+        self.assert_reaches(dear)
+        self.assertGreater(total_turn(dear), 0.0)
+        self.assertLess(total_turn(dear), total_turn(free) - math.pi / 8,
+                        "turn_cost 50 left the route turning %.3f rad against %.3f rad at 0"
+                        % (total_turn(dear), total_turn(free)))
+        self.client.update_configuration({"smooth_path": True, "turn_cost": 0.0})
+
 
 if __name__ == "__main__":
     rospy.init_node("planner_reconfigure_test")
