@@ -21,6 +21,10 @@ the goals until that many seconds have passed, and --memory-of samples a node's 
 Start move_base first (launch/move_base_demo.launch; see docs/ros.md), then:
     /usr/bin/python3 scripts/drive_goals.py [--rounds 3] [--map maps/lab.yaml] [--json out.json]
     /usr/bin/python3 scripts/drive_goals.py --duration 600 --memory-of move_base --json soak.json
+
+To time every goal beside another planner, drive both (scripts/drive_compare.sh does it, launching
+move_base with each in turn) and compare the records; the first file is the reference:
+    /usr/bin/python3 scripts/drive_goals.py --compare navfn=navfn.json eaci=eaci.json
 """
 import argparse
 import glob
@@ -156,6 +160,62 @@ def goal_message(x, y, yaw):
     return goal
 
 
+def per_goal(records):
+    """{goal: (drives, reached, mean seconds of the reached, min centre clearance, min footprint clearance,
+    contact samples)} over a record list, in the order the goals first appear."""
+    table = {}
+    for r in records:
+        table.setdefault(tuple(r["goal"]), []).append(r)
+    summary = {}
+    for goal, rows in table.items():
+        reached = [r for r in rows if r["state"] == "SUCCEEDED"]
+        summary[goal] = (len(rows), len(reached),
+                         sum(r["seconds"] for r in reached) / len(reached) if reached else float("nan"),
+                         min(r["min_centre_clearance_m"] for r in rows), min(r["min_footprint_clearance_m"] for r in rows),
+                         sum(r["contact_samples"] for r in rows))
+    return summary
+
+
+def compare(labelled_files):
+    """Prints, per goal, each run's reach, mean time and clearances, and each run's time against the first's."""
+    runs = []
+    for item in labelled_files:
+        label, _, path = item.rpartition("=")
+        runs.append((label or os.path.splitext(os.path.basename(path))[0], per_goal(json.load(open(path)))))
+    goals = list(runs[0][1])
+    for _, summary in runs[1:]:
+        goals += [g for g in summary if g not in goals]
+    header = "| goal | " + " | ".join("%s: reached, mean s, min clearance centre / footprint" % label for label, _ in runs)
+    header += "".join(" | %s / %s time" % (label, runs[0][0]) for label, _ in runs[1:]) + " |"
+    print(header)
+    print("|" + "---|" * (1 + 2 * len(runs) - 1))
+    for goal in goals:
+        cells, ratios = [], []
+        for label, summary in runs:
+            if goal not in summary:
+                cells.append("-")
+                continue
+            n, ok, mean, centre, footprint, contacts = summary[goal]
+            cells.append("%d/%d, %s, %.3f / %.3f m%s" % (ok, n, "%.1f s" % mean if ok else "-", centre, footprint,
+                                                           ", %d contact samples" % contacts if contacts else ""))
+        reference = runs[0][1].get(goal)
+        for label, summary in runs[1:]:
+            ratios.append("%.2f" % (summary[goal][2] / reference[2])
+                          if goal in summary and summary[goal][1] and reference and reference[1] else "-")
+        print("| (%.2f, %.2f) | %s |%s" % (goal[0], goal[1], " | ".join(cells), "".join(" %s |" % r for r in ratios)))
+    # The sum of the per-goal mean times over the goals every run reached at least once.
+    common = [g for g in goals if all(g in summary and summary[g][1] > 0 for _, summary in runs)]
+    cells = []
+    for label, summary in runs:
+        rows = list(summary.values())
+        cells.append("%d/%d, %.1f s summed over %d goals, %.3f / %.3f m, %d contact samples" % (
+            sum(r[1] for r in rows), sum(r[0] for r in rows), sum(summary[g][2] for g in common), len(common),
+            min(r[3] for r in rows), min(r[4] for r in rows), sum(r[5] for r in rows)))
+    reference_sum = sum(runs[0][1][g][2] for g in common)
+    ratios = ["%.2f" % (sum(summary[g][2] for g in common) / reference_sum) if common else "-" for _, summary in runs[1:]]
+    print("| all | %s |%s" % (" | ".join(cells), "".join(" %s |" % r for r in ratios)))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--map", default=os.path.join(os.path.dirname(__file__), "..", "maps", "lab.yaml"))
@@ -171,7 +231,12 @@ def main():
                         help="m: a global plan with a pose nearer an occupied cell than this is invalid (default: the "
                         "car's inscribed radius + footprint padding)")
     parser.add_argument("--trace", help="write the car's true poses here (CSV: t,x,y,yaw) and the global plans beside it (<name>_plans.json)")
+    parser.add_argument("--compare", nargs="+", metavar="[LABEL=]RECORDS.json",
+                        help="compare earlier runs' --json records goal by goal (the first is the reference) and exit")
     args = parser.parse_args()
+    if args.compare:
+        compare(args.compare)
+        return
     goals = LAB_GOALS if not args.goals else [tuple(float(v) for v in g.split(",")) for g in args.goals.split(";")]
 
     rospy.init_node("drive_goals", anonymous=True)
