@@ -24,7 +24,7 @@ Start move_base first (launch/move_base_demo.launch; see docs/ros.md), then:
 
 To time every goal beside another planner, drive both (scripts/drive_compare.sh does it, launching
 move_base with each in turn) and compare the records; the first file is the reference:
-    /usr/bin/python3 scripts/drive_goals.py --compare navfn=navfn.json eaci=eaci.json
+    /usr/bin/python3 scripts/drive_goals.py --compare navfn=navfn1.json,navfn2.json eaci=eaci1.json,eaci2.json
 """
 import argparse
 import glob
@@ -180,8 +180,9 @@ def compare(labelled_files):
     """Prints, per goal, each run's reach, mean time and clearances, and each run's time against the first's."""
     runs = []
     for item in labelled_files:
-        label, _, path = item.rpartition("=")
-        runs.append((label or os.path.splitext(os.path.basename(path))[0], per_goal(json.load(open(path)))))
+        label, _, paths = item.rpartition("=")
+        records = [r for path in paths.split(",") for r in json.load(open(path))]
+        runs.append((label or os.path.splitext(os.path.basename(paths.split(",")[0]))[0], per_goal(records)))
     goals = list(runs[0][1])
     for _, summary in runs[1:]:
         goals += [g for g in summary if g not in goals]
@@ -231,8 +232,9 @@ def main():
                         help="m: a global plan with a pose nearer an occupied cell than this is invalid (default: the "
                         "car's inscribed radius + footprint padding)")
     parser.add_argument("--trace", help="write the car's true poses here (CSV: t,x,y,yaw) and the global plans beside it (<name>_plans.json)")
-    parser.add_argument("--compare", nargs="+", metavar="[LABEL=]RECORDS.json",
-                        help="compare earlier runs' --json records goal by goal (the first is the reference) and exit")
+    parser.add_argument("--compare", nargs="+", metavar="[LABEL=]RECORDS.json[,RECORDS.json...]",
+                        help="compare earlier runs' --json records goal by goal (the first is the reference; "
+                        "comma-separated files are pooled) and exit")
     args = parser.parse_args()
     if args.compare:
         compare(args.compare)

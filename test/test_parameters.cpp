@@ -67,6 +67,11 @@ TEST(Parameters, EachBadValueGetsItsOwnReason) {
       {[](auto& p) { p.turn_cost = -0.25; }, "turn_cost must be a number in [0, 1e6]"},
       {[&](auto& p) { p.turn_cost = inf; }, "turn_cost"},
       {[](auto& p) { p.turn_cost = 2e6; }, "turn_cost"},
+      {[&](auto& p) { p.smooth_tolerance = nan; }, "smooth_tolerance"},
+      {[](auto& p) { p.smooth_tolerance = -0.1; }, "smooth_tolerance"},
+      {[](auto& p) { p.smooth_tolerance = 1.5; }, "smooth_tolerance"},
+      {[](auto& p) { p.round_corners = -1; }, "round_corners must be in 0..4"},
+      {[](auto& p) { p.round_corners = 5; }, "round_corners"},
   };
   for (const auto& c : cases) {
     eaci::Parameters p;
@@ -98,7 +103,11 @@ TEST(Parameters, SetByName) {
   EXPECT_DOUBLE_EQ(p.stop_gap, 0.01);
   eaci::setParameter(p, "turn_cost", "0.5");
   EXPECT_EQ(p.turn_cost, 0.5);
-  EXPECT_EQ(eaci::parameterNames().size(), 37u);  // 24, turn_cost and MAACO's 12
+  eaci::setParameter(p, "smooth_tolerance", "0.2");
+  EXPECT_EQ(p.smooth_tolerance, 0.2);
+  eaci::setParameter(p, "round_corners", "2");
+  EXPECT_EQ(p.round_corners, 2);
+  EXPECT_EQ(eaci::parameterNames().size(), 39u);  // 24, turn_cost, smooth_tolerance, round_corners and MAACO's 12
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

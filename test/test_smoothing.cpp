@@ -72,6 +72,125 @@ TEST(Smoothing, TakesNoShortcutNearerTheWallsThanTheRoute) {
   EXPECT_EQ(eaci::smoothRoute(grid, route), (CellPath{{0, 0}, {3, 2}, {3, 6}}));
 }
 
+TEST(Smoothing, ATolerancePassesNearerTheCorner) {
+  // A 3 x 3 band of cost 20 (every cell costs 1 + 3 x 20 / 50 = 2.2 per cell of length) whose
+  // inner corner (1,1) costs 24 (2.44 per cell), as nearer a wall. The route around the corner,
+  // (0,0) (0,1) (0,2) (1,2) (2,2), costs 4 x 2.2 = 8.8 and peaks at 20. The diagonal
+  // (0,0) -> (2,2) costs 0.707 x 2.2 + 1.414 x 2.44 + 0.707 x 2.2 = 6.561 and peaks at 24:
+  // cheaper, but nearer the wall. Without a tolerance the smoother keeps the corner, (0,0) (0,2)
+  // (2,2): (0,0) -> (1,2) crosses (1,1). With 0.2 a shortcut may enter cells up to
+  // floor(20 x 1.2) = 24: the corner is cut in one segment. With 0.1 (up to 22) it is not.
+  CostGrid grid = open(3, 3);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) grid.setCost(Cell{r, c}, 20);
+  grid.setCost(Cell{1, 1}, 24);
+  const CellPath route{{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 2}};
+  ASSERT_NEAR(eaci::routeCost(grid, route), 8.8, 1e-9);
+  const eaci::SegmentCost diagonal = eaci::segmentCostAndPeak(grid, Cell{0, 0}, Cell{2, 2});
+  EXPECT_NEAR(diagonal.cost, std::sqrt(2.0) * (0.5 * 2.2 + 2.44 + 0.5 * 2.2), 1e-9);
+  EXPECT_EQ(diagonal.peak, 24);
+  EXPECT_EQ(eaci::smoothRoute(grid, route), (CellPath{{0, 0}, {0, 2}, {2, 2}}));
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.1), (CellPath{{0, 0}, {0, 2}, {2, 2}}));
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.2), (CellPath{{0, 0}, {2, 2}}));
+  // Never through an obstacle, whatever the tolerance: a wall at the inner corner keeps it.
+  grid.setBlocked(Cell{1, 1}, true);
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 1.0), (CellPath{{0, 0}, {0, 2}, {2, 2}}));
+}
+
+TEST(Smoothing, PlannerPassesTheTolerance) {
+  // A 3 x 3 band of cost 20 but (1,0), cost 24. The only shortest route from (0,0) to (2,2) is
+  // the diagonal (0,0) (1,1) (2,2), peak 20; the straight segment (0,0) -> (2,2) touches (1,0)
+  // at the corner it passes, peak 24: without a tolerance the smoother keeps (1,1), with
+  // smooth_tolerance 0.2 (up to 24) the route is one segment.
+  CostGrid grid = open(3, 3);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) grid.setCost(Cell{r, c}, 20);
+  grid.setCost(Cell{1, 0}, 24);
+  eaci::Parameters p;
+  p.smooth_path = true;
+  const eaci::PlanResult strict = eaci::plan(grid, Cell{0, 0}, Cell{2, 2}, eaci::Algorithm::kAStar, p);
+  ASSERT_EQ(strict.path, (CellPath{{0, 0}, {1, 1}, {2, 2}}));
+  EXPECT_EQ(strict.smoothed_path, strict.path);
+  p.smooth_tolerance = 0.2;
+  const eaci::PlanResult loose = eaci::plan(grid, Cell{0, 0}, Cell{2, 2}, eaci::Algorithm::kAStar, p);
+  ASSERT_EQ(loose.path, strict.path);
+  EXPECT_EQ(loose.smoothed_path, (CellPath{{0, 0}, {2, 2}}));
+}
+
+TEST(Smoothing, RoundCornersCutsARightAngle) {
+  // An open 11 x 11 grid (cost 0: cost = length), the corner (0,10) between (0,0) and (10,10).
+  // d_max = min(10, 10 / 2) = 5: a = (0,5), b = (5,10); p a b n is 5 + 5 sqrt(2) + 5 long,
+  // shorter than 20, and free: the 90-degree corner becomes two of 45.
+  const CostGrid grid = open(11, 11);
+  const CellPath corner{{0, 0}, {0, 10}, {10, 10}};
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 0), corner);
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 1), (CellPath{{0, 0}, {0, 5}, {5, 10}, {10, 10}}));
+  // A second pass cuts both 45-degree corners again: no turn of the result reaches 45 degrees
+  // (each is about 22.5, give or take the rounding to cells), and every segment stays on the map.
+  const CellPath twice = eaci::roundCorners(grid, corner, 2);
+  ASSERT_GT(twice.size(), 4u);
+  EXPECT_EQ(twice.front(), corner.front());
+  EXPECT_EQ(twice.back(), corner.back());
+  for (std::size_t k = 1; k + 1 < twice.size(); ++k) {
+    const double h1 = std::atan2(twice[k].row - twice[k - 1].row, twice[k].col - twice[k - 1].col);
+    const double h2 = std::atan2(twice[k + 1].row - twice[k].row, twice[k + 1].col - twice[k].col);
+    EXPECT_LT(std::abs(std::remainder(h2 - h1, 2 * M_PI)), M_PI / 4) << "corner " << k;
+    EXPECT_TRUE(std::isfinite(eaci::segmentCost(grid, twice[k - 1], twice[k])));
+  }
+}
+
+TEST(Smoothing, RoundCornersKeepsOffTheInnerWall) {
+  // A 9 x 9 grid whose rows 3..8 x columns 0..5 are a wall: an L corridor three cells wide
+  // (rows 0..2, columns 6..8). The route down its middle turns at (1,7) between (1,0) and (8,7).
+  // d_max = min(7, 7 / 2) = 3.5: a = (1, 3.5 -> 4), b = (4.5 -> 5, 7); the segment (1,4) -> (5,7)
+  // crosses row 3 at column 5.5, in the wall. d = 1.75: a = (1, 5.25 -> 5), b = (2.75 -> 3, 7);
+  // (1,5) -> (3,7) passes (1,5), (2,6), (3,7) and touches (1,6), (2,5), (2,7), (3,6), all free.
+  CostGrid grid = open(9, 9);
+  for (int r = 3; r < 9; ++r)
+    for (int c = 0; c < 6; ++c) grid.setBlocked(Cell{r, c}, true);
+  const CellPath corner{{1, 0}, {1, 7}, {8, 7}};
+  EXPECT_FALSE(std::isfinite(eaci::segmentCost(grid, Cell{1, 4}, Cell{5, 7})));
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 1), (CellPath{{1, 0}, {1, 5}, {3, 7}, {8, 7}}));
+}
+
+TEST(Smoothing, PlannerRoundsCornersWhenAsked) {
+  // An L corridor 11 cells wide in a 40 x 40 grid (a wall fills rows 11..39 x columns 0..28),
+  // with a cost band along the walls and the map's edge as on a costmap: a free cell 1, 2, 3, 4
+  // cells (Chebyshev) from a wall or outside costs 200, 150, 100, 50, farther 0. The route from
+  // (5,0) to (39,34) turns at the bend in two 45-degree corners one diagonal cell apart, down
+  // the middle. Cutting the bend costs more than going round it (the cut passes nearer the
+  // inner corner, through dearer cells): with a tolerance of 10 % the planner's smoothed route
+  // with round_corners is its route without, rounded (roundCorners, tested above by hand), the
+  // bend's corners moved apart, and it still passes only free cells.
+  CostGrid grid = open(40, 40);
+  const auto wall = [](int r, int c) { return r < 0 || c < 0 || r >= 40 || c >= 40 || (r >= 11 && c <= 28); };
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 40; ++c) {
+      if (wall(r, c)) {
+        grid.setBlocked(Cell{r, c}, true);
+        continue;
+      }
+      int near = 99;
+      for (int dr = -4; dr <= 4; ++dr)
+        for (int dc = -4; dc <= 4; ++dc)
+          if (wall(r + dr, c + dc)) near = std::min(near, std::max(std::abs(dr), std::abs(dc)));
+      if (near <= 4) grid.setCost(Cell{r, c}, static_cast<std::uint8_t>(250 - 50 * near));
+    }
+  eaci::Parameters p;
+  p.smooth_path = true;
+  p.smooth_tolerance = 0.1;
+  const eaci::PlanResult plain = eaci::plan(grid, Cell{5, 0}, Cell{39, 34}, eaci::Algorithm::kAStar, p);
+  p.round_corners = 1;
+  const eaci::PlanResult rounded = eaci::plan(grid, Cell{5, 0}, Cell{39, 34}, eaci::Algorithm::kAStar, p);
+  ASSERT_TRUE(plain.success());
+  ASSERT_TRUE(rounded.success());
+  EXPECT_EQ(rounded.path, plain.path);  // the search's route is unchanged
+  EXPECT_NE(rounded.smoothed_path, plain.smoothed_path);
+  EXPECT_EQ(rounded.smoothed_path, eaci::roundCorners(grid, plain.smoothed_path, 1, 0.1));
+  for (std::size_t k = 1; k < rounded.smoothed_path.size(); ++k)
+    EXPECT_TRUE(std::isfinite(eaci::segmentCost(grid, rounded.smoothed_path[k - 1], rounded.smoothed_path[k])));
+}
+
 TEST(Smoothing, SegmentWalkEndsOnceOverABound) {
   // Row 0 of 10 cells of cost 0 but (0,5), cost 40. From (0,0) to (0,9) the segment lies half
   // a cell in each end cell and a whole cell in the 8 between: length 9, peak 40.

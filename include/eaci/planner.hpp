@@ -368,7 +368,9 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
   const Clock::time_point smoothing_start = Clock::now();
-  r.smoothed_path = params.smooth_path ? smoothRoute(grid, r.path, &poll) : r.path;
+  r.smoothed_path = params.smooth_path ? roundCorners(grid, smoothRoute(grid, r.path, &poll, params.smooth_tolerance),
+                                                       params.round_corners, params.smooth_tolerance, &poll)
+                                        : r.path;
   r.times.smoothing = since(smoothing_start);
   r.interrupted = r.interrupted || poll.stopped();
   r.smoothed_length = pathLength(r.smoothed_path);

@@ -198,6 +198,14 @@ class PlannerReconfigure(unittest.TestCase):
                         % (total_turn(dear), total_turn(free)))
         self.client.update_configuration({"smooth_path": True, "turn_cost": 0.0})
 
+    def test_7_smooth_tolerance(self):
+        # The smoother's tolerance reaches the planner at run time, within its range [0, 1].
+        config = self.client.update_configuration({"smooth_tolerance": 0.3})
+        self.assertAlmostEqual(config["smooth_tolerance"], 0.3)
+        self.assert_reaches(self.plan())
+        config = self.client.update_configuration({"smooth_tolerance": 0.0})
+        self.assertEqual(config["smooth_tolerance"], 0.0)
+
 
 if __name__ == "__main__":
     rospy.init_node("planner_reconfigure_test")

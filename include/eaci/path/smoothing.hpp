@@ -3,7 +3,8 @@
 // segment touches no obstacle cell, corners included, costs no more than the stretch of route
 // it replaces, and enters no cell costlier than the costliest cell of that stretch: the
 // smoothed route is never costlier, and on a costmap never nearer the walls, than the grid
-// route (on a map without costs only the first two conditions bite).
+// route (on a map without costs only the first two conditions bite). A tolerance (the
+// smooth_tolerance parameter) relaxes the last two by a factor, below.
 #pragma once
 
 #include <algorithm>
@@ -110,13 +111,18 @@ inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
 }
 
 // Greedy string pulling: from each kept cell, the farthest later cell of the route reachable
-// by an allowed shortcut (the search stops at the first that is not). Returns the kept cells,
+// by an allowed shortcut (the search stops at the first that is not). With `tolerance` t > 0 a
+// shortcut may cost up to (1 + t) x the stretch it replaces and enter cells up to (1 + t) x the
+// stretch's costliest cell (never an obstacle): on costmap_2d's inflation, 252 exp(-k (d - r)),
+// that lets it pass at most ln(1 + t) / k nearer the walls than the stretch, which rounds the
+// corners a cost-aware route keeps in the middle of a gap. Returns the kept cells,
 // start and goal included; consecutive kept cells are joined by straight segments.
 // A route that is not 8-connected is returned as it is. The work is up to quadratic in the
 // route's length (each shortcut tried is walked cell by cell, once, until it fails): `stop` is
 // ticked by the cells each try spans, and once it says stop the route is smoothed up to where
 // it got and goes on cell by cell from there (as valid as the whole smoothed route).
-inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPoll* stop = nullptr) {
+inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPoll* stop = nullptr,
+                            double tolerance = 0.0) {
   if (route.size() < 3 || !std::isfinite(routeCost(grid, route))) return route;
   const auto moveCost = [&](std::size_t k) {  // the move into route[k]
     const int dir = directionBetween(route[k - 1], route[k]);
@@ -135,15 +141,97 @@ inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPol
       }
       stretch_cost += moveCost(j);
       stretch_peak = std::max<int>(stretch_peak, grid.cost(route[j]));
-      const double cost_bound = stretch_cost + 1e-9;
-      const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, stretch_peak);
-      if (shortcut.cost > cost_bound || shortcut.peak > stretch_peak) break;
+      const double cost_bound = stretch_cost * (1.0 + tolerance) + 1e-9;
+      const int peak_bound = std::min(254, static_cast<int>(std::floor(stretch_peak * (1.0 + tolerance) + 1e-9)));
+      const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, peak_bound);
+      if (shortcut.cost > cost_bound || shortcut.peak > peak_bound) break;
       best = j;
     }
     kept.push_back(route[best]);
     i = best;
   }
   return kept;
+}
+
+// What the polyline through `corners` costs (segmentCostAndPeak, summed) and its costliest
+// cell: +infinity and 255 once a segment touches an obstacle.
+inline SegmentCost polylineCostAndPeak(const CostGrid& grid, const CellPath& corners) {
+  SegmentCost total;
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    if (corners[k - 1] == corners[k]) continue;
+    const SegmentCost segment = segmentCostAndPeak(grid, corners[k - 1], corners[k]);
+    total.cost += segment.cost;
+    total.peak = std::max(total.peak, segment.peak);
+    if (!std::isfinite(total.cost)) break;
+  }
+  return total;
+}
+
+// The cell nearest the point `distance` cells of length from `from` towards `to` (at most `to`).
+inline Cell cellTowards(Cell from, Cell to, double distance) {
+  const double length = std::hypot(to.col - from.col, to.row - from.row);
+  const double t = length > 0 ? std::min(1.0, distance / length) : 0.0;
+  return Cell{static_cast<int>(std::lround(from.row + t * (to.row - from.row))),
+              static_cast<int>(std::lround(from.col + t * (to.col - from.col)))};
+}
+
+// Corners of a smoothed route closer together than this many cells round as one bend: the
+// smoother often turns through 90 degrees in two 45-degree corners one diagonal cell apart.
+inline constexpr double kBendCornerSpacing = 3.0;
+
+// Rounds the bends of a smoothed route (smoothRoute's kept cells), `passes` times, each pass
+// bend by bend from the start. A bend is a corner, or corners less than kBendCornerSpacing
+// apart, v_i .. v_j between p (before it) and n (after it). It is cut off by one segment from
+// a cell a on v_i -> p to a cell b on v_j -> n, both d cells of length from the bend, when
+// p a b n is allowed in place of p v_i .. v_j n by the smoother's rule (no obstacle; cost up to
+// (1 + tolerance) x, costliest cell up to (1 + tolerance) x that of the stretch replaced). d is
+// the largest allowed of d_max, d_max / 2, d_max / 4, ... down to one cell, d_max = min(|v_i p|,
+// |v_j n| / 2) (|v_i p| is what the previous cut left of that segment; half of v_j n is left
+// for the next bend). A pass splits a bend's turn in two (90 degrees become two corners of
+// about 45), which a car takes with less slowing than one sharp bend (docs/ros.md, "Driving to
+// the lab goals"). Start and goal stay. `stop` is ticked by the cells each try walks; once it
+// says stop the rest stays as it is.
+inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int passes, double tolerance = 0.0,
+                             StopPoll* stop = nullptr) {
+  const auto distance = [](Cell a, Cell b) { return std::hypot(a.col - b.col, a.row - b.row); };
+  CellPath route = corners;
+  for (int pass = 0; pass < passes && route.size() >= 3; ++pass) {
+    CellPath rounded{route.front()};
+    std::size_t i = 1;
+    while (i + 1 < route.size()) {
+      std::size_t j = i;  // the bend: route[i .. j]
+      while (j + 2 < route.size() && distance(route[j], route[j + 1]) < kBendCornerSpacing) ++j;
+      const Cell p = rounded.back(), n = route[j + 1];
+      const double to_p = distance(route[i], p), to_n = distance(route[j], n);
+      CellPath replaced{p};
+      replaced.insert(replaced.end(), route.begin() + static_cast<std::ptrdiff_t>(i),
+                      route.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+      replaced.push_back(n);
+      bool cut = false;
+      const std::size_t walk = static_cast<std::size_t>(to_p + to_n) + 1;
+      if (stop == nullptr || !stop->tick(walk)) {
+        const SegmentCost bend = polylineCostAndPeak(grid, replaced);
+        const double cost_bound = bend.cost * (1.0 + tolerance) + 1e-9;
+        const int peak_bound = std::min(254, static_cast<int>(std::floor(bend.peak * (1.0 + tolerance) + 1e-9)));
+        for (double d = std::min(to_p, to_n / 2); std::isfinite(bend.cost) && d >= 1.0 && !cut; d /= 2) {
+          const Cell a = cellTowards(route[i], p, d), b = cellTowards(route[j], n, d);
+          if (a == b || a == p || a == route[i] || b == route[j]) continue;  // rounded onto a corner: try nearer
+          if (stop != nullptr && stop->tick(walk)) break;
+          const SegmentCost cut_cost = polylineCostAndPeak(grid, CellPath{p, a, b, n});
+          if (cut_cost.cost <= cost_bound && cut_cost.peak <= peak_bound) {
+            rounded.push_back(a);
+            rounded.push_back(b);
+            cut = true;
+          }
+        }
+      }
+      if (!cut) rounded.insert(rounded.end(), replaced.begin() + 1, replaced.end() - 1);
+      i = j + 1;
+    }
+    rounded.push_back(route.back());
+    route = std::move(rounded);
+  }
+  return route;
 }
 
 }  // namespace eaci

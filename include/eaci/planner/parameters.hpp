@@ -43,6 +43,13 @@ struct Parameters : ColonyParameters {
   // never through an obstacle, never costlier. Off for the paper's benchmarks; the ROS layer
   // turns it on.
   bool smooth_path = false;
+  // With smooth_path: a shortcut may cost up to (1 + smooth_tolerance) x the stretch it replaces
+  // and enter cells up to (1 + smooth_tolerance) x its costliest cell (path/smoothing.hpp). 0 =
+  // never costlier, never nearer the walls; more rounds a cost-aware route's corners.
+  double smooth_tolerance = 0.0;
+  // With smooth_path: passes of corner rounding over the smoothed route (path/smoothing.hpp,
+  // roundCorners), each cut by the same rule; each pass splits a corner's turn in two. 0 = off.
+  int round_corners = 0;
   // turn_cost, the price of turning, is the colonies' too: ColonyParameters.
 };
 
@@ -92,6 +99,11 @@ inline std::string validationError(const Parameters& p) {
   else if (!finite(p.turn_cost) || p.turn_cost < 0 || p.turn_cost > 1e6)
     e << "turn_cost must be a number in [0, 1e6], the cost of one radian of heading change between consecutive "
          "moves, 0 = no price on turning (got " << p.turn_cost << ")";
+  else if (!finite(p.smooth_tolerance) || p.smooth_tolerance < 0 || p.smooth_tolerance > 1)
+    e << "smooth_tolerance must be a fraction in [0, 1]: a shortcut may cost up to (1 + smooth_tolerance) x the "
+         "stretch it replaces (got " << p.smooth_tolerance << ")";
+  else if (p.round_corners < 0 || p.round_corners > 4)
+    e << "round_corners must be in 0..4, the passes of corner rounding, 0 = off (got " << p.round_corners << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
 }
@@ -182,6 +194,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"cost_factor", fieldAccess("cost_factor", &Parameters::cost_factor)},
       {"lethal_cost", fieldAccess("lethal_cost", &Parameters::lethal_cost)},
       {"smooth_path", fieldAccess("smooth_path", &Parameters::smooth_path)},
+      {"smooth_tolerance", fieldAccess("smooth_tolerance", &Parameters::smooth_tolerance)},
+      {"round_corners", fieldAccess("round_corners", &Parameters::round_corners)},
       {"allow_unknown", fieldAccess("allow_unknown", &Parameters::allow_unknown)},
       {"island_strategy", wordAccess("island_strategy", &Parameters::island_strategy,
                                      {IslandStrategy::kGeodesic, IslandStrategy::kPaper})},
