@@ -1,7 +1,10 @@
 // Line-of-sight smoothing and pose orientation, against hand-computed routes and headings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "eaci/path/orientation.hpp"
@@ -15,6 +18,28 @@ using eaci::CostGrid;
 
 namespace {
 CostGrid open(int rows, int cols) { return CostGrid::fromRows(std::vector<std::vector<int>>(rows, std::vector<int>(cols, 0)), false); }
+
+// An L corridor 11 cells wide in a 40 x 40 grid (a wall fills rows 11..39 x columns 0..28),
+// with a cost band along the walls and the map's edge as on a costmap: a free cell 1, 2, 3, 4
+// cells (Chebyshev) from a wall or outside costs 200, 150, 100, 50, farther 0. The corridor's
+// middle (row 5, column 34) is 6 cells from every wall: cost 0.
+CostGrid lCorridorWithBand() {
+  CostGrid grid = open(40, 40);
+  const auto wall = [](int r, int c) { return r < 0 || c < 0 || r >= 40 || c >= 40 || (r >= 11 && c <= 28); };
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 40; ++c) {
+      if (wall(r, c)) {
+        grid.setBlocked(Cell{r, c}, true);
+        continue;
+      }
+      int near = 99;
+      for (int dr = -4; dr <= 4; ++dr)
+        for (int dc = -4; dc <= 4; ++dc)
+          if (wall(r + dr, c + dc)) near = std::min(near, std::max(std::abs(dr), std::abs(dc)));
+      if (near <= 4) grid.setCost(Cell{r, c}, static_cast<std::uint8_t>(250 - 50 * near));
+    }
+  return grid;
+}
 }  // namespace
 
 TEST(Smoothing, AStaircaseOnAnOpenGridBecomesOneSegment) {
@@ -153,29 +178,35 @@ TEST(Smoothing, RoundCornersKeepsOffTheInnerWall) {
   EXPECT_EQ(eaci::roundCorners(grid, corner, 1), (CellPath{{1, 0}, {1, 5}, {3, 7}, {8, 7}}));
 }
 
+TEST(Smoothing, RoundCornersPassesNoNearerTheWallsThanTheBend) {
+  // The L corridor of lCorridorWithBand, a route down its middle from (5,1), in the band (cost
+  // 150, two cells from the map's edge), round the corner (5,34) to (33,34) (cost 0). The
+  // corner's cells are all 6 cells from the walls, cost 0. With a tolerance of 2 x, the cost
+  // allows every cut below and the cut's cells must cost at most 2 x 0: d_max = min(33, 28 / 2) = 14. d = 14: (5,20) -> (19,34)
+  // crosses the wall at (13,28). d = 7: (5,27) -> (12,34) passes (7,29), 4 cells from the inner
+  // corner (11,28), cost 50. d = 3.5: (5, 30.5 -> 31) -> (8.5 -> 9, 34) passes (7,32), cost 50.
+  // d = 1.75: (5, 32.25 -> 32) -> (6.75 -> 7, 34) passes (6,33) and touches (5,33), (6,32),
+  // (6,34), (7,33), all 5 or more cells from every wall: cost 0, taken. Although the route began
+  // in the band (a rule against the costliest cell of the whole stretch would let the cut in).
+  const CostGrid grid = lCorridorWithBand();
+  ASSERT_EQ(grid.cost(Cell{5, 1}), 150);
+  ASSERT_EQ(grid.cost(Cell{7, 29}), 50);
+  ASSERT_EQ(grid.cost(Cell{7, 32}), 50);
+  ASSERT_EQ(grid.cost(Cell{6, 32}), 0);
+  const CellPath corner{{5, 1}, {5, 34}, {33, 34}};
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 1, 1.0), (CellPath{{5, 1}, {5, 32}, {7, 34}, {33, 34}}));
+  // A second pass finds no cut of the bend (5,32)..(7,34) that keeps to cost 0 (each enters the
+  // band nearer the inner corner), and leaves the route as it was.
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 2, 1.0), (CellPath{{5, 1}, {5, 32}, {7, 34}, {33, 34}}));
+}
+
 TEST(Smoothing, PlannerRoundsCornersWhenAsked) {
-  // An L corridor 11 cells wide in a 40 x 40 grid (a wall fills rows 11..39 x columns 0..28),
-  // with a cost band along the walls and the map's edge as on a costmap: a free cell 1, 2, 3, 4
-  // cells (Chebyshev) from a wall or outside costs 200, 150, 100, 50, farther 0. The route from
-  // (5,0) to (39,34) turns at the bend in two 45-degree corners one diagonal cell apart, down
+  // The L corridor of lCorridorWithBand. The route from (5,0) to (39,34) turns at the bend in two 45-degree corners one diagonal cell apart, down
   // the middle. Cutting the bend costs more than going round it (the cut passes nearer the
   // inner corner, through dearer cells): with a tolerance of 10 % the planner's smoothed route
   // with round_corners is its route without, rounded (roundCorners, tested above by hand), the
   // bend's corners moved apart, and it still passes only free cells.
-  CostGrid grid = open(40, 40);
-  const auto wall = [](int r, int c) { return r < 0 || c < 0 || r >= 40 || c >= 40 || (r >= 11 && c <= 28); };
-  for (int r = 0; r < 40; ++r)
-    for (int c = 0; c < 40; ++c) {
-      if (wall(r, c)) {
-        grid.setBlocked(Cell{r, c}, true);
-        continue;
-      }
-      int near = 99;
-      for (int dr = -4; dr <= 4; ++dr)
-        for (int dc = -4; dc <= 4; ++dc)
-          if (wall(r + dr, c + dc)) near = std::min(near, std::max(std::abs(dr), std::abs(dc)));
-      if (near <= 4) grid.setCost(Cell{r, c}, static_cast<std::uint8_t>(250 - 50 * near));
-    }
+  const CostGrid grid = lCorridorWithBand();
   eaci::Parameters p;
   p.smooth_path = true;
   p.smooth_tolerance = 0.1;

@@ -181,10 +181,11 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   logProfile(setup_.who, reply, convert_ms, msSince(publish_start), entered);
   answer.cost = reply.result.cost;
   char line[192];
-  std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s",
+  std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s%s",
                 reply.result.smoothed_length * reply.frame.resolution, plan.size(), reply.result.cost,
                 reply.result.iterations_run, reply.stopped_by == StopReason::kNone ? "" : ", the best so far: ",
-                reply.stopped_by == StopReason::kNone ? "" : toString(reply.stopped_by));
+                reply.stopped_by == StopReason::kNone ? "" : toString(reply.stopped_by),
+                reply.kept_previous_route ? "; the route sent last kept (route_hysteresis)" : "");
   answer.message = line;
   return answer;
 }

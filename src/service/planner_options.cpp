@@ -30,6 +30,7 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"inflation_radius", fieldAccess<Options>("inflation_radius", &Options::inflation_radius)},
       {"cost_scaling_factor", fieldAccess<Options>("cost_scaling_factor", &Options::cost_scaling_factor)},
       {"landmarks", fieldAccess<Options>("landmarks", &Options::landmarks)},
+      {"route_hysteresis", fieldAccess<Options>("route_hysteresis", &Options::route_hysteresis)},
       {"orientation_mode",
        {[](Options& o, const std::string& v) {
           try {
@@ -123,6 +124,9 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
     e << "max_planning_time must be >= 0 seconds, 0 = no limit (got " << options.max_planning_time << ")";
   else if (options.landmarks < 0 || options.landmarks > 64)
     e << "landmarks must be in 0..64, 0 = none (got " << options.landmarks << ")";
+  else if (!std::isfinite(options.route_hysteresis) || options.route_hysteresis < 0 || options.route_hysteresis > 1)
+    e << "route_hysteresis must be in [0, 1], the fraction by which a replan's route must be cheaper than the "
+         "route sent last to replace it, 0 = off (got " << options.route_hysteresis << ")";
   return e.str();
 }
 

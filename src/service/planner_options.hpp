@@ -30,6 +30,11 @@ struct RosPlannerOptions {
   // Landmarks kept for the island route's search on maps from 256 x 256 cells (eaci::LandmarkCache):
   // made in the background after the first plan on a costmap, 4 bytes a cell each; 0 = none.
   int landmarks = 4;
+  // A replan to the same goal (the same cell, the same costmap frame and configuration) keeps
+  // the route sent last, rejoined from the robot's cell, while it costs at most (1 + this) x
+  // the new route by the planner's measure (eaci/path/route_hysteresis.hpp): successive plans
+  // do not swap between routes of nearly equal cost. 0 = every plan sends its own route.
+  double route_hysteresis = 0.0;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "eaci/grid/nearest_free.hpp"
+#include "eaci/path/route_hysteresis.hpp"
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
 #include "route_defect.hpp"
@@ -20,6 +21,11 @@ namespace {
 
 std::string where(const Eigen::Vector2d& p) {
   return "(" + eaci::formatNumber(p.x(), 3) + ", " + eaci::formatNumber(p.y(), 3) + ")";
+}
+
+// A route is kept across plans only on the same costmap frame (a rolling window moves it).
+bool sameFrame(const eaci::MapFrame& a, const eaci::MapFrame& b) {
+  return a.width == b.width && a.height == b.height && a.resolution == b.resolution && a.origin == b.origin;
 }
 
 std::string sizeOf(const eaci::MapFrame& frame) {
@@ -101,6 +107,7 @@ void PlanningService::configure(const eaci::Parameters& params, const RosPlanner
   try {
     Configuration config{params, options, error};
     std::lock_guard<std::mutex> lock(config_mutex_);
+    config.generation = config_.generation + 1;
     config_ = std::move(config);
   } catch (...) {  // no memory for the copy: plans are refused until a configuration is stored
     std::lock_guard<std::mutex> lock(config_mutex_);
@@ -272,6 +279,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     return done;
   };
   const auto failure = [&](PlanOutcome outcome, const std::string& why) -> PlanReply {
+    sent_route_.reset();
     reply.outcome = outcome;
     reply.error = why;
     return finish(reply);
@@ -420,6 +428,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     reply.result.smoothed_path = reply.result.path;
     reply.result.smoothed_length = reply.result.length;
   }
+  keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config);
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   if (reply.stopped_by != StopReason::kNone)
@@ -429,6 +438,27 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
                                                              : "the best route so far"));
   reply.outcome = PlanOutcome::kOk;
   return finish(reply);
+}
+
+void PlanningService::keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view,
+                                           eaci::Cell start, eaci::Cell target, const Configuration& config) {
+  const eaci::MapFrame& frame = reply.frame;
+  const double hysteresis = config.options.route_hysteresis;
+  if (hysteresis > 0 && sent_route_ && sent_route_->generation == config.generation && sent_route_->target == target &&
+      sameFrame(sent_route_->frame, frame)) {
+    const eaci::CellPath kept = eaci::rejoinRoute(sent_route_->corners, start, kRejoinDistance / frame.resolution);
+    if (!kept.empty() &&
+        drivableRouteDefect(view, kept, start, target, config.params.allow_corner_cutting).empty()) {
+      const double kept_cost = eaci::polylineObjective(grid, kept, config.params.turn_cost);
+      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, config.params.turn_cost);
+      if (kept_cost <= new_cost * (1.0 + hysteresis)) {
+        reply.result.smoothed_path = kept;
+        reply.result.smoothed_length = eaci::pathLength(kept);
+        reply.kept_previous_route = true;
+      }
+    }
+  }
+  sent_route_ = SentRoute{frame, target, reply.result.smoothed_path, config.generation};
 }
 
 void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested) {

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -107,12 +108,19 @@ struct PlanReply {
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the reachable cell within tolerance
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
+  // route_hysteresis: result.smoothed_path is the route sent last, rejoined from the start,
+  // because the new route (result.path, smoothed) was not cheaper enough to replace it.
+  bool kept_previous_route = false;
   RosPlannerOptions options;    // the options the plan was made with (orientation_mode, publish_plan, ...)
   PlanPhases phases;
 };
 
 class PlanningService {
  public:
+  // m: a robot farther than this from the route sent last has left it; route_hysteresis keeps
+  // nothing then.
+  static constexpr double kRejoinDistance = 0.5;
+
   PlanningService(ServiceSettings settings, Logger log);
   ~PlanningService();
   PlanningService(const PlanningService&) = delete;
@@ -125,6 +133,7 @@ class PlanningService {
     eaci::Parameters params;
     RosPlannerOptions options;
     std::string error;
+    std::uint64_t generation = 0;  // counts configure() calls: a route kept across plans needs the same one
   };
   Configuration configuration() const;
 
@@ -157,6 +166,12 @@ class PlanningService {
   PlanReply planLocked(const CostmapView& costmap, const CostmapChanges& changes, const PlanRequest& request,
                        const Configuration& config, const std::function<bool()>& should_stop,
                        const std::atomic<int>& stop_reason);
+  // route_hysteresis: replaces reply.result.smoothed_path by the route sent last, rejoined from
+  // `start`, when the plan goes to the same target on the same frame and configuration, the
+  // robot is within kRejoinDistance of that route, it is still drivable, and it costs at most
+  // (1 + route_hysteresis) x the new one (eaci::polylineObjective); then remembers what goes out.
+  void keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view, eaci::Cell start,
+                            eaci::Cell target, const Configuration& config);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,
@@ -193,6 +208,14 @@ class PlanningService {
   std::string emptied_reported_;              // the plan's: the stand-in's sentence last said
   int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)
   std::string landmark_error_reported_;       // the plan's
+  // The plan's: the route last sent out, for route_hysteresis; reset by a failed plan.
+  struct SentRoute {
+    eaci::MapFrame frame;
+    eaci::Cell target;
+    eaci::CellPath corners;
+    std::uint64_t generation = 0;
+  };
+  std::optional<SentRoute> sent_route_;
 
   PlanCancellation cancellation_;
 

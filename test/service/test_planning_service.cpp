@@ -292,6 +292,92 @@ TEST(PlanningService, ASoundSmoothedRouteGoesOutAsItIs) {
   EXPECT_EQ(log.count("not drivable"), 0);
 }
 
+// Two ways round a lethal block (rows 5..15, columns 15..25 of 41 x 21 cells of 1 m), the same
+// length by symmetry: from (10,2) to (10,38) above it, through rows 0..4, or below, rows 16..20.
+// Straight legs (10,2) -> (4,14) -> (4,26) -> (10,38) above: 2 sqrt(180) + 12 = 38.83. Cells of
+// cost 5 on one side's five rows over the block's columns make that side dearer: a move costs
+// (50 + 3 x 5) / 50 = 1.3 per cell there, 11 cells on the way: 38.83 + 3.3 = 42.13, 1.085 x.
+CostmapSnapshot blockWithDearSide(bool dear_above) {
+  CostmapSnapshot costmap = openCostmap(41, 21);
+  for (int row = 0; row < 21; ++row)
+    for (int col = 15; col <= 25; ++col) {
+      if (row >= 5 && row <= 15) at(costmap, row, col) = kCostmapLethal;
+      else if ((row < 5) == dear_above) at(costmap, row, col) = 5;
+    }
+  return costmap;
+}
+
+bool routeGoesAbove(const eaci::CellPath& corners) {
+  for (const eaci::Cell& c : corners)
+    if (c.row > 10) return false;
+  return true;
+}
+
+// route_hysteresis: a replan to the same goal keeps the route sent last while it costs at most
+// (1 + route_hysteresis) x the new one. The first plan goes above (the cells below cost 5);
+// then the cells above cost 5 instead: the new route goes below, 1.085 x cheaper; with 0.2 the
+// route above is kept, with 0.05 or 0 it is not. A wall across the kept route, another goal or
+// a new configuration end the keeping.
+TEST(PlanningService, AReplanKeepsTheRouteSentLastWhileItIsNotMuchDearer) {
+  const CostmapSnapshot dear_below = blockWithDearSide(false), dear_above = blockWithDearSide(true);
+  const auto replanned = [&](double hysteresis) {
+    Log log;
+    PlanningService service(settings(), log.logger());
+    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+    config.options.route_hysteresis = hysteresis;
+    configure(service, config);
+    const PlanReply first = service.plan(dear_below, request(dear_below, {10, 2}, {10, 38}));
+    EXPECT_TRUE(first.ok()) << first.error;
+    EXPECT_TRUE(routeGoesAbove(first.result.smoothed_path));
+    EXPECT_FALSE(first.kept_previous_route);  // nothing sent before
+    return std::make_pair(first, service.plan(dear_above, request(dear_above, {10, 2}, {10, 38})));
+  };
+  for (const double hysteresis : {0.0, 0.05}) {
+    const auto [first, second] = replanned(hysteresis);
+    ASSERT_TRUE(second.ok()) << second.error;
+    EXPECT_FALSE(routeGoesAbove(second.result.smoothed_path)) << hysteresis;
+    EXPECT_FALSE(second.kept_previous_route) << hysteresis;
+  }
+  const auto [first, second] = replanned(0.2);
+  ASSERT_TRUE(second.ok()) << second.error;
+  EXPECT_TRUE(second.kept_previous_route);
+  EXPECT_EQ(second.result.smoothed_path, first.result.smoothed_path);  // the robot is still at the start
+  EXPECT_FALSE(routeGoesAbove(second.result.path)) << "the search's own route goes below";
+  EXPECT_EQ(routeDefect(dear_above, second.result.path, {10, 2}, {10, 38}), "");
+
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+  config.options.route_hysteresis = 0.2;
+  configure(service, config);
+  const PlanReply above = service.plan(dear_below, request(dear_below, {10, 2}, {10, 38}));
+  ASSERT_TRUE(routeGoesAbove(above.result.smoothed_path));
+  // The robot drove on to (4,14), on the route (its cell as the start): the rest of the route.
+  const eaci::Cell on_route = above.result.smoothed_path[1];
+  const PlanReply driven = service.plan(dear_above, request(dear_above, on_route, {10, 38}));
+  EXPECT_TRUE(driven.kept_previous_route);
+  EXPECT_EQ(driven.result.smoothed_path,
+            eaci::CellPath(above.result.smoothed_path.begin() + 1, above.result.smoothed_path.end()));
+  // A wall across the passage above: the kept route is not drivable, the new one goes out.
+  CostmapSnapshot walled = dear_above;
+  for (int row = 0; row < 5; ++row) at(walled, row, 30) = kCostmapLethal;
+  const PlanReply round = service.plan(walled, request(walled, {10, 2}, {10, 38}));
+  ASSERT_TRUE(round.ok()) << round.error;
+  EXPECT_FALSE(round.kept_previous_route);
+  EXPECT_FALSE(routeGoesAbove(round.result.smoothed_path));
+  // Back to the first costmap: the route below is now the one sent, and the way above is not
+  // more than 1.2 x cheaper: kept.
+  const PlanReply back = service.plan(dear_below, request(dear_below, {10, 2}, {10, 38}));
+  EXPECT_TRUE(back.kept_previous_route);
+  EXPECT_FALSE(routeGoesAbove(back.result.smoothed_path));
+  // Another goal: nothing to keep.
+  EXPECT_FALSE(service.plan(dear_below, request(dear_below, {10, 2}, {11, 38})).kept_previous_route);
+  // A new configuration: nothing to keep either.
+  service.plan(dear_above, request(dear_above, {10, 2}, {10, 38}));
+  configure(service, config);
+  EXPECT_FALSE(service.plan(dear_below, request(dear_below, {10, 2}, {10, 38})).kept_previous_route);
+}
+
 TEST(PlanningService, ABadParameterRefusesEveryPlanUntilFixed) {
   Log log;
   PlanningService service(settings(), log.logger());
@@ -317,7 +403,8 @@ TEST(PlannerOptions, EveryBadValueIsNamed) {
       {"region_margin", "-1"}, {"stop_gap", "inf"},    {"seed", "-1"},          {"seed", "18446744073709551616"},
       {"max_planning_time", "-0.5"}, {"max_planning_time", "nan"}, {"default_tolerance", "-1"},
       {"landmarks", "65"},    {"landmarks", "-1"},     {"occupied_threshold", "0"}, {"algorithm", "dijkstra"},
-      {"orientation_mode", "9"}, {"ants", "many"},     {"no_such_parameter", "1"}};
+      {"orientation_mode", "9"}, {"ants", "many"},     {"route_hysteresis", "-0.1"}, {"route_hysteresis", "nan"},
+      {"route_hysteresis", "1.5"}, {"no_such_parameter", "1"}};
   for (const auto& [name, text] : bad) {
     eaci::Parameters params = rosDefaultParameters();
     RosPlannerOptions options;

@@ -183,8 +183,12 @@ inline constexpr double kBendCornerSpacing = 3.0;
 // bend by bend from the start. A bend is a corner, or corners less than kBendCornerSpacing
 // apart, v_i .. v_j between p (before it) and n (after it). It is cut off by one segment from
 // a cell a on v_i -> p to a cell b on v_j -> n, both d cells of length from the bend, when
-// p a b n is allowed in place of p v_i .. v_j n by the smoother's rule (no obstacle; cost up to
-// (1 + tolerance) x, costliest cell up to (1 + tolerance) x that of the stretch replaced). d is
+// p a b n is allowed in place of p v_i .. v_j n by the smoother's rule with the corner it cuts
+// off, a v_i .. v_j b, as the stretch replaced: it touches no obstacle, costs up to
+// (1 + tolerance) x as much as p v_i .. v_j n, and the cut a -> b enters no cell costlier than
+// (1 + tolerance) x the costliest of the corner (not of the whole stretch from p, which may
+// start in the band: the rounded route passes at most ln(1 + tolerance) / k nearer the walls
+// than the bend did, which keeps the car's clearance; issue #30). d is
 // the largest allowed of d_max, d_max / 2, d_max / 4, ... down to one cell, d_max = min(|v_i p|,
 // |v_j n| / 2) (|v_i p| is what the previous cut left of that segment; half of v_j n is left
 // for the next bend). A pass splits a bend's turn in two (90 degrees become two corners of
@@ -212,13 +216,18 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
       if (stop == nullptr || !stop->tick(walk)) {
         const SegmentCost bend = polylineCostAndPeak(grid, replaced);
         const double cost_bound = bend.cost * (1.0 + tolerance) + 1e-9;
-        const int peak_bound = std::min(254, static_cast<int>(std::floor(bend.peak * (1.0 + tolerance) + 1e-9)));
         for (double d = std::min(to_p, to_n / 2); std::isfinite(bend.cost) && d >= 1.0 && !cut; d /= 2) {
           const Cell a = cellTowards(route[i], p, d), b = cellTowards(route[j], n, d);
           if (a == b || a == p || a == route[i] || b == route[j]) continue;  // rounded onto a corner: try nearer
           if (stop != nullptr && stop->tick(walk)) break;
-          const SegmentCost cut_cost = polylineCostAndPeak(grid, CellPath{p, a, b, n});
-          if (cut_cost.cost <= cost_bound && cut_cost.peak <= peak_bound) {
+          CellPath corner{a};
+          corner.insert(corner.end(), replaced.begin() + 1, replaced.end() - 1);
+          corner.push_back(b);
+          const int peak_bound = std::min(
+              254, static_cast<int>(std::floor(polylineCostAndPeak(grid, corner).peak * (1.0 + tolerance) + 1e-9)));
+          const SegmentCost chord = segmentCostAndPeak(grid, a, b);
+          const double cut_cost = segmentCost(grid, p, a) + chord.cost + segmentCost(grid, b, n);
+          if (cut_cost <= cost_bound && chord.peak <= peak_bound) {
             rounded.push_back(a);
             rounded.push_back(b);
             cut = true;

@@ -48,7 +48,8 @@ struct Parameters : ColonyParameters {
   // never costlier, never nearer the walls; more rounds a cost-aware route's corners.
   double smooth_tolerance = 0.0;
   // With smooth_path: passes of corner rounding over the smoothed route (path/smoothing.hpp,
-  // roundCorners), each cut by the same rule; each pass splits a corner's turn in two. 0 = off.
+  // roundCorners), each cut by the smoother's rule with the corner it cuts off as the stretch
+  // replaced (never much nearer the walls than the bend); each pass splits a corner's turn in two. 0 = off.
   int round_corners = 0;
   // turn_cost, the price of turning, is the colonies' too: ColonyParameters.
 };
