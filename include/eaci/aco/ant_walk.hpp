@@ -156,15 +156,19 @@ struct WalkSetup {
   }
 
   // With turns priced, the turns a move into `to` in direction `dir` commits the ant to at its
-  // leg's end: entering the leg's goal `target` (`to` itself or a neighbour of it: the leg's
-  // last step is then known) and leaving it in its exit direction. A two-step look-ahead: on
-  // geodesic islands, at most two moves apart, it sees every turn of a leg.
+  // leg's end: entering the leg's goal `target` and leaving it in its exit direction. From `to`
+  // itself or a neighbour of it the leg's last step is known, and the price is exact; from
+  // farther, the least turning any route heading `dir` needs to reach the goal
+  // (turnStepsAtLeast) or to leave it in the exit direction, whichever is more, so that a move
+  // that carries the ant straight past its island is priced for the way back.
   double legEndTurnPrice(Cell to, std::size_t target, int dir) const {
     const Cell island = waypoints[target];
     const int exit = exit_dir.empty() ? -1 : exit_dir[target];
     if (to == island) return exit >= 0 ? turn_price[turnSteps(dir, exit)] : 0.0;
     const int last = directionBetween(to, island);
-    if (last < 0) return 0.0;
+    if (last < 0)
+      return turn_price[std::max(turnStepsAtLeast(dir, island.row - to.row, island.col - to.col),
+                                 exit >= 0 ? turnSteps(dir, exit) : 0)];
     return turn_price[turnSteps(dir, last)] + (exit >= 0 ? turn_price[turnSteps(last, exit)] : 0.0);
   }
 

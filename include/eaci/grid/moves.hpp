@@ -68,6 +68,21 @@ inline int turnSteps(int from_dir, int to_dir) {
   return diff <= 4 ? diff : kDirections - diff;
 }
 
+// The fewest 45-degree steps of turning any route needs that starts with heading `dir` and
+// moves by the offset (dr, dc) in all: the angle from the direction to the offset, rounded up
+// to 45 degrees (0 for no offset). Exact, in integers.
+inline int turnStepsAtLeast(int dir, int dr, int dc) {
+  if (dr == 0 && dc == 0) return 0;
+  const long long ux = kDirCol[dir], uy = kDirRow[dir], vx = dc, vy = dr;
+  const long long dot = ux * vx + uy * vy, cross = ux * vy - uy * vx;
+  const long long uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+  if (cross == 0 && dot > 0) return 0;           // straight on
+  if (dot > 0 && 2 * dot * dot >= uu * vv) return 1;   // within 45 degrees: cos >= 1/sqrt 2
+  if (dot >= 0) return 2;                        // within 90 degrees
+  if (2 * dot * dot <= uu * vv) return 3;        // within 135 degrees: cos >= -1/sqrt 2
+  return 4;
+}
+
 // The heading change of one 45-degree step, radians: turn_cost (planner/parameters.hpp) prices
 // a turn of k steps at turn_cost x k x kTurnStepRadians.
 constexpr double kTurnStepRadians = 0.78539816339744830962;  // pi / 4
