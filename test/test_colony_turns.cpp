@@ -98,6 +98,13 @@ TEST(ColonyTurns, TheHeuristicLooksAheadToTheTurnsAtTheLegsEnd) {
   EXPECT_NEAR(extra(Cell{2, 1}, kNorthEast, kNorth), turn_cost * (kPi / 4 + kPi / 4), 1e-6);
   // Into it from (2,0) heading north, moving north-east: the move's own turn, none out.
   EXPECT_NEAR(extra(Cell{2, 0}, kNorth, kNorthEast), turn_cost * kPi / 4, 1e-6);
+  // Farther off, the least turning on the way: from S east to (3,1), the island two rows due
+  // north needs a 90-degree turn of any route heading east (turnStepsAtLeast), more than the 45
+  // onto its exit direction: 2 steps.
+  EXPECT_NEAR(extra(Cell{3, 0}, -1, kEast), turn_cost * kPi / 2, 1e-6);
+  // From (3,1) on east to (3,2), past it: the island is up and back to the left, more than 90
+  // degrees from east (3 steps), against 1 step onto its exit direction.
+  EXPECT_NEAR(extra(Cell{3, 1}, kEast, kEast), turn_cost * 3 * kPi / 4, 1e-6);
 }
 
 TEST(ColonyTurns, ADearTurnMakesEveryColonyTakeTheDearerStraightRoute) {
@@ -150,29 +157,6 @@ TEST(ColonyTurns, EaciReachesTheCombinedOptimumOfThePaperMapsFromTheExactFront) 
       }
     }
   }
-}
-
-TEST(ColonyTurns, TheLookAheadPricesTheWayBackToAnIslandTheAntWouldPass) {
-  // Same islands as above. From S, east to (3,1) leaves the island (1,1) two rows due north:
-  // any route heading east needs a 90-degree turn to reach it (turnStepsAtLeast), more than
-  // the 45 onto its exit direction: 2 steps.
-  const CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(4, std::vector<int>(4, 0)), false);
-  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
-  const double turn_cost = 0.8, epsilon = 0.5;
-  const std::vector<Cell> islands{{3, 0}, {1, 1}, {0, 2}};
-  eaci::WalkSetup plain(grid, field, islands, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
-  eaci::WalkSetup priced(grid, field, islands, eaci::HeuristicRule::kTurningAware, 7.0, epsilon);
-  priced.priceTurns(turn_cost);
-  priced.setExitDirections({{3, 0}, {2, 0}, {1, 1}, {0, 2}});
-  const auto extra = [&](Cell from, int previous_dir, int dir) {
-    const std::uint32_t next = priced.region.regionIndex(eaci::step(from, dir));
-    return priced.heuristicDistance(from, next, 1, previous_dir, dir) -
-           plain.heuristicDistance(from, next, 1, previous_dir, dir);
-  };
-  EXPECT_NEAR(extra(Cell{3, 0}, -1, kEast), turn_cost * kPi / 2, 1e-6);
-  // From (3,1) heading east, on east to (3,2): the island is up and back to the left, more than
-  // 90 degrees from east (3 steps), against 1 step onto its exit direction.
-  EXPECT_NEAR(extra(Cell{3, 1}, kEast, kEast), turn_cost * 3 * kPi / 4, 1e-6);
 }
 
 TEST(ColonyTurns, EaciReachesTheCombinedOptimumThroughTheLabsInflatedGaps) {
