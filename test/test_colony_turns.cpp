@@ -41,6 +41,61 @@ TEST(ColonyTurns, AnAntsRouteCostCountsItsTurnsAtTheirPrice) {
   }
 }
 
+TEST(ColonyTurns, AnAntsRouteCostCountsTheTurnsAtItsEnds) {
+  // The L of the test above with headings at its ends: facing north at S, the first move (east)
+  // turns 90 degrees; facing west at G, the last move (north) turns 90 more. Every ant walks
+  // the same route: cost 5 + turn_cost x (pi/2 + pi/2 + pi/2). The plan's own combined cost,
+  // whatever the colony, prices the same three turns.
+  const CostGrid grid = CostGrid::fromRows({{1, 1, 1, 0}, {1, 1, 1, 0}, {0, 0, 0, 0}}, false);
+  const eaci::PheromoneField field(grid.cellCount(), 1.0, 1.0);
+  eaci::EndHeadings ends;
+  ends.start = kPi / 2;
+  ends.goal = kPi;
+  const double turn_cost = 0.3;
+  eaci::WalkSetup setup(grid, field, {Cell{2, 0}, Cell{0, 3}}, eaci::HeuristicRule::kTurningAware, 7.0, 0.5);
+  setup.priceTurns(turn_cost, ends);
+  eaci::AntWalker walker;
+  eaci::SplitMix64 rng = eaci::antStream(1, 1, 0);
+  AntRoute route;
+  walker.walk(setup, rng, route);
+  ASSERT_TRUE(route.complete);
+  EXPECT_NEAR(route.cost, 5.0 + turn_cost * 3 * kPi / 2, 1e-12);
+  eaci::Parameters p;
+  p.turn_cost = turn_cost;
+  p.max_iterations = 5;
+  eaci::PlanOptions options;
+  options.end_headings = ends;
+  for (eaci::Algorithm algorithm :
+       {eaci::Algorithm::kEaci, eaci::Algorithm::kAco, eaci::Algorithm::kMaaco, eaci::Algorithm::kAStar}) {
+    const eaci::PlanResult r = eaci::plan(grid, Cell{2, 0}, Cell{0, 3}, algorithm, p, options);
+    ASSERT_TRUE(r.success()) << r.error;
+    EXPECT_NEAR(r.combined_cost, 5.0 + turn_cost * 3 * kPi / 2, 1e-12) << eaci::toString(algorithm);
+  }
+}
+
+TEST(ColonyTurns, TheGoalHeadingPicksTheColoniesLastLeg) {
+  // test_heading_search.cpp's hand case: on 3 x 5 open cells from the bottom left to the top
+  // right, the shortest routes NE NE E E and E E NE NE turn 45 degrees each; a goal heading of
+  // 45 degrees adds nothing to the second and 45 degrees to the first. Every colony must find
+  // the second: combined cost 2 + 2 sqrt 2 + turn_cost x pi/4.
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}}, false);
+  eaci::PlanOptions options;
+  options.end_headings.goal = kPi / 4;
+  for (eaci::Algorithm algorithm : {eaci::Algorithm::kEaci, eaci::Algorithm::kAco}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      eaci::Parameters p;
+      p.turn_cost = 1.0;
+      p.seed = seed;
+      const eaci::PlanResult r = eaci::plan(grid, Cell{2, 0}, Cell{0, 4}, algorithm, p, options);
+      ASSERT_TRUE(r.success()) << r.error;
+      EXPECT_NEAR(r.combined_cost, 2.0 + 2.0 * std::sqrt(2.0) + kPi / 4, 1e-9)
+          << eaci::toString(algorithm) << " seed " << seed;
+      EXPECT_EQ(r.path.back(), (Cell{0, 4}));
+      EXPECT_EQ(r.path[r.path.size() - 2], (Cell{1, 3})) << eaci::toString(algorithm) << " seed " << seed;
+    }
+  }
+}
+
 TEST(ColonyTurns, TheHeuristicPricesTheCandidateMovesTurn) {
   // Heading east at (2,2) of an open 5 x 9 map: going on east turns nothing, north-east 45
   // degrees, north 90. d_jg + sigma (Eq. 16-17, epsilon per 45-degree step) gains turn_cost x
@@ -175,15 +230,20 @@ TEST(ColonyTurns, EaciReachesTheCombinedOptimumThroughTheLabsInflatedGaps) {
   const eaci::GridView view(costs.data(), map.width, map.height, eaci::RowOrder::kTopFirst,
                             eaci::inflatedCostsInterpretation(false));
   const Cell start = *map.worldToCell({4.2, 0.5});
-  for (const Eigen::Vector2d& goal_xy : {Eigen::Vector2d{1.1, 2.2}, Eigen::Vector2d{0.5, 2.6}}) {
+  // The second goal with headings at both ends, as the robot plans (facing west at the start,
+  // south at the goal; price_end_headings).
+  eaci::PlanOptions with_ends;
+  with_ends.end_headings = {kPi, -kPi / 2};
+  for (const auto& [goal_xy, options] : {std::pair<Eigen::Vector2d, eaci::PlanOptions>{{1.1, 2.2}, {}},
+                                         {{0.5, 2.6}, {}}, {{0.5, 2.6}, with_ends}}) {
     const Cell goal = *map.worldToCell(goal_xy);
     eaci::Parameters p;
     p.turn_cost = 20.0;
-    const eaci::PlanResult exact = eaci::plan(view, start, goal, eaci::Algorithm::kAStar, p);
+    const eaci::PlanResult exact = eaci::plan(view, start, goal, eaci::Algorithm::kAStar, p, options);
     ASSERT_EQ(exact.status, eaci::PlanStatus::kSuccess) << exact.error;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       p.seed = seed;
-      const eaci::PlanResult r = eaci::plan(view, start, goal, eaci::Algorithm::kEaci, p);
+      const eaci::PlanResult r = eaci::plan(view, start, goal, eaci::Algorithm::kEaci, p, options);
       ASSERT_EQ(r.status, eaci::PlanStatus::kSuccess) << r.error;
       EXPECT_LE(r.combined_cost, exact.combined_cost * 1.01)
           << "goal " << goal_xy.transpose() << " seed " << seed << ": " << r.lost_ants_total << " ants lost";

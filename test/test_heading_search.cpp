@@ -70,8 +70,18 @@ double turnAngle(int a, int b) {
   return std::atan2(std::abs(cross), dot);
 }
 
+// The angle between a heading (radians counter-clockwise from east, north being row - 1) and
+// direction k, radians, from their vectors; 0 for no heading (NaN).
+double endTurn(double yaw, int k) {
+  if (std::isnan(yaw)) return 0.0;
+  const double x = std::cos(yaw), y = std::sin(yaw);  // y up: against the rows
+  const double kx = kStepCol[k], ky = -kStepRow[k];
+  return std::atan2(std::abs(x * ky - y * kx), x * kx + y * ky);
+}
+
 // The combined cost of a route in the test's own terms; +infinity for a move it does not allow.
-double testCombinedCost(const TestMap& m, const CellPath& route, double turn_cost) {
+double testCombinedCost(const TestMap& m, const CellPath& route, double turn_cost, double start_yaw = NAN,
+                        double goal_yaw = NAN) {
   double total = 0.0;
   int previous = -1;
   for (std::size_t i = 1; i < route.size(); ++i) {
@@ -79,9 +89,10 @@ double testCombinedCost(const TestMap& m, const CellPath& route, double turn_cos
     while (k < 8 && !(route[i].row - route[i - 1].row == kStepRow[k] && route[i].col - route[i - 1].col == kStepCol[k])) ++k;
     if (k == 8 || !m.canMove(route[i - 1].row, route[i - 1].col, k)) return kInf;
     total += m.moveCost(route[i - 1].row, route[i - 1].col, k);
-    if (previous >= 0) total += turn_cost * turnAngle(previous, k);
+    total += turn_cost * (previous >= 0 ? turnAngle(previous, k) : endTurn(start_yaw, k));
     previous = k;
   }
+  if (previous >= 0) total += turn_cost * endTurn(goal_yaw, previous);
   return total;
 }
 
@@ -108,21 +119,25 @@ std::vector<double> costToGoal(const TestMap& m, Cell goal) {
 
 // Brute force: every simple path from start to goal, depth first, cut only where its cost so
 // far plus the cost left without turns (costToGoal) cannot beat the best found.
-double bruteForce(const TestMap& m, Cell start, Cell goal, double turn_cost) {
+// With headings at the ends (NaN: none), the first move also pays its turn from the start
+// heading and the last its turn onto the goal heading.
+double bruteForce(const TestMap& m, Cell start, Cell goal, double turn_cost, double start_yaw = NAN,
+                  double goal_yaw = NAN) {
   const std::vector<double> to_goal = costToGoal(m, goal);
   std::vector<char> on_path(m.rows * m.cols, 0);
   double best = kInf;
   std::function<void(int, int, int, double)> walk = [&](int r, int c, int heading, double cost) {
     if (cost + to_goal[r * m.cols + c] >= best + 1e-12) return;
     if (r == goal.row && c == goal.col) {
-      best = std::min(best, cost);
+      best = std::min(best, cost + (heading >= 0 ? turn_cost * endTurn(goal_yaw, heading) : 0.0));
       return;
     }
     for (int k = 0; k < 8; ++k) {
       const int nr = r + kStepRow[k], nc = c + kStepCol[k];
       if (!m.canMove(r, c, k) || on_path[nr * m.cols + nc]) continue;
       on_path[nr * m.cols + nc] = 1;
-      walk(nr, nc, k, cost + m.moveCost(r, c, k) + (heading >= 0 ? turn_cost * turnAngle(heading, k) : 0.0));
+      walk(nr, nc, k,
+           cost + m.moveCost(r, c, k) + turn_cost * (heading >= 0 ? turnAngle(heading, k) : endTurn(start_yaw, k)));
       on_path[nr * m.cols + nc] = 0;
     }
   };
@@ -345,6 +360,87 @@ TEST(HeadingSearch, MatchesADijkstraOverTheExplicitStateGraph) {
     }
   }
   EXPECT_GT(compared, 150);
+}
+
+TEST(HeadingSearch, EndHeadingsMatchTheBruteForceOnSmallRandomMaps) {
+  // Random headings at both ends, or at one: the brute force prices the first move's turn from
+  // the start heading and the last move's onto the goal heading with its own angles.
+  eaci::SplitMix64 headings(7);
+  int compared = 0, other_route = 0;
+  for (std::uint64_t seed = 300; seed < 360; ++seed) {
+    const int size = 5 + static_cast<int>(seed % 3);
+    const TestMap m = randomMap(seed, size, size, 0.2, seed % 4 >= 2);
+    const CostGrid grid = m.grid();
+    const Cell start{0, 0}, goal{size - 1, size - 1};
+    eaci::HeadingSearch search;
+    for (double turn_cost : {0.1, 1.0, 4.0}) {
+      eaci::EndHeadings ends;
+      ends.start = seed % 3 == 2 ? NAN : (headings.uniform() * 4 - 2) * kPi;
+      ends.goal = seed % 3 == 1 ? NAN : (headings.uniform() * 4 - 2) * kPi;
+      const double expected = bruteForce(m, start, goal, turn_cost, ends.start, ends.goal);
+      const eaci::TurningPath p = search.cheapestPath(grid, start, goal, turn_cost, nullptr, ends);
+      ASSERT_EQ(p.found, std::isfinite(expected)) << "seed " << seed;
+      if (!p.found) continue;
+      ++compared;
+      EXPECT_NEAR(p.combined_cost, expected, 1e-9) << "seed " << seed << " turn_cost " << turn_cost;
+      EXPECT_NEAR(testCombinedCost(m, p.path, turn_cost, ends.start, ends.goal), expected, 1e-9) << "seed " << seed;
+      EXPECT_EQ(eaci::test::routeDefect(grid, p.path, start, goal), "") << "seed " << seed;
+      if (p.path != search.cheapestPath(grid, start, goal, turn_cost).path) ++other_route;
+    }
+  }
+  EXPECT_GT(compared, 120);
+  EXPECT_GT(other_route, 10);  // the headings do change routes
+}
+
+TEST(HeadingSearch, TheGoalHeadingPicksTheLastLegAndTheStartHeadingTheFirst) {
+  // 3 x 5 open cells, S bottom left, G top right: every shortest route is two north-east moves
+  // and two east moves (2 + 2 sqrt 2 long), and the two that turn once (45
+  // degrees) are NE NE E E and E E NE NE. Entering G heading east (goal yaw 0), the first ends
+  // lined up and pays nothing more; the second pays a further 45 degrees. A goal yaw of 45
+  // degrees picks the second; a start yaw of 45 degrees (no goal yaw) the first.
+  const CostGrid grid = CostGrid::fromRows({{0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}}, false);
+  const Cell start{2, 0}, goal{0, 4};
+  const double shortest = 2.0 + 2.0 * std::sqrt(2.0);
+  const CellPath diagonal_first{{2, 0}, {1, 1}, {0, 2}, {0, 3}, {0, 4}};
+  const CellPath diagonal_last{{2, 0}, {2, 1}, {2, 2}, {1, 3}, {0, 4}};
+  eaci::EndHeadings east_at_goal;
+  east_at_goal.goal = 0.0;
+  const eaci::TurningPath a = eaci::cheapestTurningPath(grid, start, goal, 1.0, nullptr, east_at_goal);
+  ASSERT_TRUE(a.found);
+  EXPECT_EQ(a.path, diagonal_first);
+  EXPECT_NEAR(a.combined_cost, shortest + kPi / 4, 1e-12);
+  eaci::EndHeadings north_east_at_goal;
+  north_east_at_goal.goal = kPi / 4;
+  const eaci::TurningPath b = eaci::cheapestTurningPath(grid, start, goal, 1.0, nullptr, north_east_at_goal);
+  ASSERT_TRUE(b.found);
+  EXPECT_EQ(b.path, diagonal_last);
+  EXPECT_NEAR(b.combined_cost, shortest + kPi / 4, 1e-12);
+  eaci::EndHeadings north_east_at_start;
+  north_east_at_start.start = kPi / 4 + 2 * kPi;  // any turn count
+  const eaci::TurningPath c = eaci::cheapestTurningPath(grid, start, goal, 1.0, nullptr, north_east_at_start);
+  ASSERT_TRUE(c.found);
+  EXPECT_EQ(c.path, diagonal_first);
+  EXPECT_NEAR(c.combined_cost, shortest + kPi / 4, 1e-12);
+  // Facing away at the start (west) and at the goal (south): both ends pay, and no detour pays
+  // less (G can only be entered heading north, north-east or east, 90 degrees or more off south).
+  eaci::EndHeadings away;
+  away.start = kPi;
+  away.goal = -kPi / 2;
+  const eaci::TurningPath d = eaci::cheapestTurningPath(grid, start, goal, 1.0, nullptr, away);
+  ASSERT_TRUE(d.found);
+  EXPECT_NEAR(d.cost, shortest, 1e-12);
+  // NE NE E E: 135 (start) + 45 + 90 (goal) = 270 degrees; E E NE NE: 180 + 45 + 135 = 360.
+  EXPECT_EQ(d.path, diagonal_first);
+  EXPECT_NEAR(d.combined_cost, shortest + 1.5 * kPi, 1e-12);
+  // The plan's own combined cost prices the same ends.
+  eaci::Parameters params;
+  params.turn_cost = 1.0;
+  eaci::PlanOptions options;
+  options.end_headings = north_east_at_goal;
+  const eaci::PlanResult r = eaci::plan(grid, start, goal, eaci::Algorithm::kAStar, params, options);
+  ASSERT_TRUE(r.success()) << r.error;
+  EXPECT_EQ(r.path, diagonal_last);
+  EXPECT_NEAR(r.combined_cost, shortest + kPi / 4, 1e-12);
 }
 
 TEST(HeadingSearch, WithoutATurnCostItFindsTheAStarOptimum) {

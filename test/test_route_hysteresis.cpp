@@ -36,6 +36,23 @@ TEST(RouteHysteresis, PolylineObjectiveIsCostPlusTurning) {
   EXPECT_EQ(eaci::polylineObjective(grid, corner, 0.0), std::numeric_limits<double>::infinity());
 }
 
+TEST(RouteHysteresis, PolylineObjectivePricesTheTurnsAtItsEnds) {
+  const CostGrid grid = open(5, 5);
+  const CellPath corner{{0, 0}, {0, 4}, {4, 4}};  // east along row 0, then south (row + 1)
+  eaci::EndHeadings ends;
+  ends.start = M_PI / 2;  // facing north: the first leg (east) turns 90 degrees
+  EXPECT_NEAR(eaci::polylineObjective(grid, corner, 2.0, ends), 8.0 + 2.0 * (M_PI / 2 + M_PI / 2), 1e-12);
+  ends.goal = 0.0;  // facing east at the goal: the last leg (south) turns 90 more
+  EXPECT_NEAR(eaci::polylineObjective(grid, corner, 2.0, ends), 8.0 + 2.0 * 3 * M_PI / 2, 1e-12);
+  ends.start = std::numeric_limits<double>::quiet_NaN();
+  ends.goal = -M_PI / 2 + 4 * M_PI;  // south, any turn count: lined up
+  EXPECT_NEAR(eaci::polylineObjective(grid, corner, 2.0, ends), 8.0 + M_PI, 1e-12);
+  // A route that does not move turns nothing, whatever the headings.
+  ends.start = 0.0;
+  ends.goal = M_PI;
+  EXPECT_EQ(eaci::polylineObjective(grid, CellPath{{2, 2}, {2, 2}}, 2.0, ends), 0.0);
+}
+
 TEST(RouteHysteresis, RejoinRouteFromTheNearestPoint) {
   const CellPath previous{{0, 0}, {0, 10}, {10, 10}};
   // One cell beside the first segment, at column 4: on to (0,10) and the rest.

@@ -294,6 +294,19 @@ TEST(Orientation, ModesSetHeadingsAsGlobalPlannerDoes) {
   EXPECT_DOUBLE_EQ(rightward[4], 2.0);
 }
 
+TEST(Orientation, TheTravelHeadingIsTheAxisTheModeDrivesAlong) {
+  // forward (and the modes that blend it): the robot's x axis; backward: -x; leftward: +y;
+  // rightward: -y. NaN (no heading) stays NaN.
+  const double yaw = 0.3;
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kForward), 0.3);
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kNone), 0.3);
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kInterpolate), 0.3);
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kBackward), 0.3 + M_PI);
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kLeftward), 0.3 + M_PI / 2);
+  EXPECT_DOUBLE_EQ(eaci::travelHeading(yaw, eaci::OrientationMode::kRightward), 0.3 - M_PI / 2);
+  EXPECT_TRUE(std::isnan(eaci::travelHeading(std::nan(""), eaci::OrientationMode::kBackward)));
+}
+
 TEST(Orientation, ModeNamesAndNumbers) {
   EXPECT_EQ(eaci::orientationModeFromString("forward_then_interpolate"), eaci::OrientationMode::kForwardThenInterpolate);
   EXPECT_EQ(eaci::orientationModeFromString("2"), eaci::OrientationMode::kInterpolate);

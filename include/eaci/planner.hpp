@@ -15,6 +15,7 @@
 #include "eaci/aco/pheromone_picture.hpp"
 #include "eaci/aco/solvers.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/metrics/path_metrics.hpp"
 #include "eaci/path/smoothing.hpp"
@@ -112,6 +113,10 @@ struct PlanOptions {
   IterationObserver observer;      // sees the field at iteration 0 (initial) and after each update
   // Kept by a caller that plans again and again; null: this call's own buffers and threads.
   PlannerWorkspace* workspace = nullptr;
+  // The headings at the route's ends (the robot's yaw, the goal's; grid angles): with
+  // turn_cost > 0 every algorithm prices the turn onto the first move and off the last one
+  // like a corner (grid/end_headings.hpp). Default: none, the ends turn nothing.
+  EndHeadings end_headings;
 };
 
 // Where a plan's time went, in milliseconds (steady clock): for profiles (the planning
@@ -133,8 +138,9 @@ struct PlanResult {
   double smoothed_length = std::numeric_limits<double>::infinity();  // cells, along smoothed_path
   double cost = std::numeric_limits<double>::infinity();    // sum of the move costs (CostGrid::moveCost): L_k
   double length = std::numeric_limits<double>::infinity();  // cells: straight step 1, diagonal sqrt 2
-  // cost + turn_cost x the route's heading change in radians (combinedRouteCost): the objective
-  // A* minimises when turn_cost > 0; the same as `cost` when turn_cost is 0.
+  // cost + turn_cost x the route's heading change in radians, its end turns included
+  // (combinedRouteCost with PlanOptions::end_headings): the objective A* minimises when
+  // turn_cost > 0; the same as `cost` when turn_cost is 0.
   double combined_cost = std::numeric_limits<double>::infinity();
   double total_turn_deg = 0.0;
   int iterations_to_converge = 0;  // iteration that first reached the final cost (0 for A*)
@@ -275,7 +281,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   if (algorithm == Algorithm::kAStar && params.turn_cost > 0) {  // the combined objective: (cell, heading) states
     HeadingSearch own_search;
     HeadingSearch& search = options.workspace ? options.workspace->turning : own_search;
-    TurningPath cheapest = search.cheapestPath(grid, start, goal, params.turn_cost, &poll);
+    TurningPath cheapest = search.cheapestPath(grid, start, goal, params.turn_cost, &poll, options.end_headings);
     r.path = std::move(cheapest.path);
     r.islands = {start, goal};
     r.interrupted = cheapest.stopped;
@@ -317,10 +323,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     };
     ColonyResult colony =
         algorithm == Algorithm::kEaci
-            ? solveEaci(grid, start, goal, params, options.should_stop, observer, search_buffers, colony_workspace)
+            ? solveEaci(grid, start, goal, params, options.should_stop, observer, search_buffers, colony_workspace,
+                        options.end_headings)
         : algorithm == Algorithm::kMaaco
-            ? solveMaaco(grid, start, goal, params, options.should_stop, observer, colony_workspace)
-            : solveClassicAco(grid, start, goal, params, options.should_stop, observer, colony_workspace);
+            ? solveMaaco(grid, start, goal, params, options.should_stop, observer, colony_workspace, options.end_headings)
+            : solveClassicAco(grid, start, goal, params, options.should_stop, observer, colony_workspace,
+                              options.end_headings);
     r.times.search = setup_done ? std::chrono::duration<double, std::milli>(*setup_done - solve_start).count()
                                 : since(solve_start);
     r.times.colony = setup_done ? since(*setup_done) : 0.0;
@@ -364,7 +372,7 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   }
   r.status = PlanStatus::kSuccess;
   r.cost = routeCost(grid, r.path);
-  r.combined_cost = combinedRouteCost(grid, r.path, params.turn_cost);
+  r.combined_cost = combinedRouteCost(grid, r.path, params.turn_cost, options.end_headings);
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
   const Clock::time_point smoothing_start = Clock::now();

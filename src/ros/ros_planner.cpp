@@ -1,6 +1,8 @@
 #include "ros_planner.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include <nav_msgs/OccupancyGrid.h>
@@ -107,6 +109,14 @@ void logProfile(const std::string& who, const PlanReply& reply, double convert_m
                   describePhases(reply.phases).c_str(), convert_ms, publish_ms, msSince(entered));
 }
 
+// The yaw of a pose's orientation, or NaN when the quaternion is not a rotation (all zeros, as
+// some tools send a position alone, or not finite): such a pose has no heading to price.
+double yawOf(const geometry_msgs::Quaternion& q) {
+  const double norm2 = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  if (!std::isfinite(norm2) || norm2 < 1e-6) return std::numeric_limits<double>::quiet_NaN();
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);  // any scale
+}
+
 }  // namespace
 
 PlanRequest RosPlanner::requestFor(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
@@ -115,6 +125,8 @@ PlanRequest RosPlanner::requestFor(const geometry_msgs::PoseStamped& start, cons
   request.start = {start.pose.position.x, start.pose.position.y};
   request.goal = {goal.pose.position.x, goal.pose.position.y};
   request.tolerance = tolerance;
+  request.start_yaw = yawOf(start.pose.orientation);
+  request.goal_yaw = yawOf(goal.pose.orientation);
   request.record_pheromone = pheromone_pub_.getNumSubscribers() > 0;
   return request;
 }

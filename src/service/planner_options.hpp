@@ -35,6 +35,12 @@ struct RosPlannerOptions {
   // the new route by the planner's measure (eaci/path/route_hysteresis.hpp): successive plans
   // do not swap between routes of nearly equal cost. 0 = every plan sends its own route.
   double route_hysteresis = 0.0;
+  // With turn_cost > 0, a route also pays turn_cost x the turn from the robot's heading onto
+  // its first move and from its last move onto the goal's heading (eaci::EndHeadings; the
+  // headings of orientation_mode, travelHeading): it leaves the way the robot faces and arrives
+  // lined up with the goal where the costs are close. A pose whose quaternion is not a rotation
+  // (all zeros) has no heading. false: the ends turn nothing.
+  bool price_end_headings = true;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base

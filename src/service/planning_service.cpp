@@ -381,6 +381,9 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
+  if (options.price_end_headings)  // grid angles are the costmap frame's yaws (y up the rows)
+    plan_options.end_headings = {eaci::travelHeading(request.start_yaw, options.orientation_mode),
+                                 eaci::travelHeading(request.goal_yaw, options.orientation_mode)};
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
   const eaci::CostGrid& grid = mirror.grid();
   reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
@@ -428,7 +431,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     reply.result.smoothed_path = reply.result.path;
     reply.result.smoothed_length = reply.result.length;
   }
-  keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config);
+  keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config, plan_options.end_headings);
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   if (reply.stopped_by != StopReason::kNone)
@@ -441,7 +444,8 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
 }
 
 void PlanningService::keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view,
-                                           eaci::Cell start, eaci::Cell target, const Configuration& config) {
+                                           eaci::Cell start, eaci::Cell target, const Configuration& config,
+                                           const eaci::EndHeadings& ends) {
   const eaci::MapFrame& frame = reply.frame;
   const double hysteresis = config.options.route_hysteresis;
   if (hysteresis > 0 && sent_route_ && sent_route_->generation == config.generation && sent_route_->target == target &&
@@ -449,8 +453,8 @@ void PlanningService::keepSentRouteIfClose(PlanReply& reply, const eaci::CostGri
     const eaci::CellPath kept = eaci::rejoinRoute(sent_route_->corners, start, kRejoinDistance / frame.resolution);
     if (!kept.empty() &&
         drivableRouteDefect(view, kept, start, target, config.params.allow_corner_cutting).empty()) {
-      const double kept_cost = eaci::polylineObjective(grid, kept, config.params.turn_cost);
-      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, config.params.turn_cost);
+      const double kept_cost = eaci::polylineObjective(grid, kept, config.params.turn_cost, ends);
+      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, config.params.turn_cost, ends);
       if (kept_cost <= new_cost * (1.0 + hysteresis)) {
         reply.result.smoothed_path = kept;
         reply.result.smoothed_length = eaci::pathLength(kept);

@@ -19,6 +19,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -74,6 +75,10 @@ struct PlanRequest {
   // m; < 0: default_tolerance. The route ends on the cell nearest the goal within it that the
   // start can reach (navfn's rule): the goal itself when free and reachable.
   double tolerance = -1.0;
+  // rad, in the costmap's frame (its origin's yaw ignored, as positions): the robot's yaw and the
+  // goal's; NaN: none (price_end_headings)
+  double start_yaw = std::numeric_limits<double>::quiet_NaN();
+  double goal_yaw = std::numeric_limits<double>::quiet_NaN();
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
 };
 
@@ -169,9 +174,10 @@ class PlanningService {
   // route_hysteresis: replaces reply.result.smoothed_path by the route sent last, rejoined from
   // `start`, when the plan goes to the same target on the same frame and configuration, the
   // robot is within kRejoinDistance of that route, it is still drivable, and it costs at most
-  // (1 + route_hysteresis) x the new one (eaci::polylineObjective); then remembers what goes out.
+  // (1 + route_hysteresis) x the new one (eaci::polylineObjective, both priced for the turns at
+  // `ends` too); then remembers what goes out.
   void keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view, eaci::Cell start,
-                            eaci::Cell target, const Configuration& config);
+                            eaci::Cell target, const Configuration& config, const eaci::EndHeadings& ends);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,

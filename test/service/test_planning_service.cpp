@@ -378,6 +378,48 @@ TEST(PlanningService, AReplanKeepsTheRouteSentLastWhileItIsNotMuchDearer) {
   EXPECT_FALSE(service.plan(dear_below, request(dear_below, {10, 2}, {10, 38})).kept_previous_route);
 }
 
+// price_end_headings: with turn_cost > 0 the route pays for the turn from the robot's yaw onto
+// it and off it onto the goal's yaw. 5 x 3 open cells, from the bottom left to the top right:
+// the shortest routes NE NE E E and E E NE NE turn 45 degrees each (test_heading_search.cpp's
+// hand case). A goal yaw of 45 degrees (north-east) picks the second, 0 (east) the first; a
+// robot that backs along its routes (orientation_mode backward) with a goal yaw of 225 degrees
+// travels north-east into the goal too. Off, the ends are not priced.
+TEST(PlanningService, TheGoalsYawPicksTheRouteThatArrivesLinedUp) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+  config.params.turn_cost = 1.0;
+  configure(service, config);
+  const CostmapSnapshot costmap = openCostmap(5, 3);
+  const double shortest = 2.0 + 2.0 * std::sqrt(2.0);
+  const auto plan_with_goal_yaw = [&](double yaw) {
+    PlanRequest r = request(costmap, {2, 0}, {0, 4});
+    r.goal_yaw = yaw;
+    const PlanReply reply = service.plan(costmap, r);
+    EXPECT_TRUE(reply.ok()) << reply.error;
+    return reply.result;
+  };
+  const eaci::PlanResult north_east = plan_with_goal_yaw(M_PI / 4);
+  ASSERT_EQ(north_east.path.size(), 5u);
+  EXPECT_EQ(north_east.path[3], (eaci::Cell{1, 3}));
+  EXPECT_NEAR(north_east.combined_cost, shortest + M_PI / 4, 1e-9);
+  const eaci::PlanResult east = plan_with_goal_yaw(0.0);
+  ASSERT_EQ(east.path.size(), 5u);
+  EXPECT_EQ(east.path[3], (eaci::Cell{0, 3}));
+  const eaci::PlanResult south = plan_with_goal_yaw(-M_PI / 2);  // 90 degrees off east, the least
+  EXPECT_NEAR(south.combined_cost, shortest + M_PI / 4 + M_PI / 2, 1e-9);
+  EXPECT_TRUE(std::isnan(request(costmap, {2, 0}, {0, 4}).goal_yaw));  // no yaw by default: nothing priced
+  config.options.orientation_mode = eaci::OrientationMode::kBackward;
+  configure(service, config);
+  const eaci::PlanResult backing = plan_with_goal_yaw(M_PI / 4 + M_PI);
+  ASSERT_EQ(backing.path.size(), 5u);
+  EXPECT_EQ(backing.path[3], (eaci::Cell{1, 3}));
+  config.options.orientation_mode = eaci::OrientationMode::kForward;
+  config.options.price_end_headings = false;
+  configure(service, config);
+  EXPECT_NEAR(plan_with_goal_yaw(-M_PI / 2).combined_cost, shortest + M_PI / 4, 1e-9);
+}
+
 TEST(PlanningService, ABadParameterRefusesEveryPlanUntilFixed) {
   Log log;
   PlanningService service(settings(), log.logger());

@@ -18,6 +18,7 @@
 #include "eaci/aco/transition.hpp"
 #include "eaci/random.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/end_headings.hpp"
 
 namespace eaci {
 
@@ -96,15 +97,19 @@ struct WalkSetup {
   HeuristicRule heuristic = HeuristicRule::kGoalDistance;
   InversePower eta_power{7.0};                // x -> x^-beta
   // sigma of Eq. 17 by [previous direction + 1][direction], plus the price of the turn when
-  // turns are priced (priceTurns); row 0: no previous move, sigma = 0.
+  // turns are priced (priceTurns); row 0: no previous move, sigma = 0 (plus, with a start
+  // heading, the first move's turn from it).
   std::array<std::array<double, kDirections>, kDirections + 1> turning_cost{};
   // The price of a turn of k 45-degree steps, turn_cost x k x pi/4 (issue #30), which each move
   // adds to the route's cost L_k; all 0 unless priceTurns was called with turn_cost > 0.
   std::array<double, 5> turn_price{};
   bool prices_turns = false;
-  // Per waypoint: the direction its route leaves it in (geodesic islands: the cheapest route's,
-  // setExitDirections), -1 where unknown; read only when turns are priced.
-  std::vector<std::int8_t> exit_dir;
+  // The first move's price by direction: its turn from the start heading (EndHeadings), 0 without one.
+  std::array<double, kDirections> start_turn_price{};
+  // Per waypoint, by the direction a route enters it in: the price of turning onto the way it
+  // leaves, an island's exit direction (setExitDirections) or the goal heading (priceTurns);
+  // 0 where unknown. Read only when turns are priced.
+  std::vector<std::array<double, kDirections>> leave_price;
   // d_jg (costToWaypoint) tabulated per waypoint over the region (filled by
   // tabulateCostsToWaypoints() when it fits): one load per candidate instead of a computation.
   std::vector<std::vector<float>> cost_to_waypoint_table;
@@ -137,39 +142,50 @@ struct WalkSetup {
   // Prices turning (issue #30): with turn_cost > 0 every route's L_k is its combined cost (the
   // move costs plus turn_cost x its heading change in radians, combinedRouteCost), and the
   // heuristic's d_jg + sigma counts the candidate move's turn at that price too, so the walk,
-  // the update and the ranking of routes score one objective. turn_cost 0 changes nothing.
-  void priceTurns(double turn_cost) {
+  // the update and the ranking of routes score one objective. With end headings the first move
+  // and the arrival at E are priced the same way (combinedRouteCost with `ends`). turn_cost 0
+  // changes nothing.
+  void priceTurns(double turn_cost, const EndHeadings& ends = {}) {
     if (!(turn_cost > 0)) return;
     prices_turns = true;
     for (int k = 0; k <= 4; ++k) turn_price[k] = turn_cost * k * kTurnStepRadians;
     for (int from = 0; from < kDirections; ++from)
       for (int to = 0; to < kDirections; ++to) turning_cost[from + 1][to] += turn_price[turnSteps(from, to)];
+    start_turn_price = headingTurnPrices(ends.start, turn_cost);
+    for (int to = 0; to < kDirections; ++to) turning_cost[0][to] += start_turn_price[to];
+    leave_price.assign(waypoints.size(), std::array<double, kDirections>{});
+    leave_price.back() = headingTurnPrices(ends.goal, turn_cost);
   }
 
   // The direction the route `route` (S .. E, through every waypoint in order, as geodesic
   // islands are) leaves each waypoint in; the heuristic then prices the turn at a leg's end.
+  // After priceTurns.
   void setExitDirections(const CellPath& route) {
-    exit_dir.assign(waypoints.size(), -1);
+    if (!prices_turns) return;
     std::size_t z = 0;
     for (std::size_t k = 0; k + 1 < route.size() && z + 1 < waypoints.size(); ++k)
-      if (route[k] == waypoints[z]) exit_dir[z++] = static_cast<std::int8_t>(directionBetween(route[k], route[k + 1]));
+      if (route[k] == waypoints[z]) {
+        const int exit = directionBetween(route[k], route[k + 1]);
+        for (int in = 0; in < kDirections; ++in) leave_price[z][in] = turn_price[turnSteps(in, exit)];
+        ++z;
+      }
   }
 
   // With turns priced, the turns a move into `to` in direction `dir` commits the ant to at its
-  // leg's end: entering the leg's goal `target` and leaving it in its exit direction. From `to`
-  // itself or a neighbour of it the leg's last step is known, and the price is exact; from
-  // farther, the least turning any route heading `dir` needs to reach the goal
-  // (turnStepsAtLeast) or to leave it in the exit direction, whichever is more, so that a move
-  // that carries the ant straight past its island is priced for the way back.
+  // leg's end: entering the leg's goal `target` and turning onto the way it leaves (its exit
+  // direction, or at E the goal heading: leave_price). From `to` itself or a neighbour of it the
+  // leg's last step is known, and the price is exact; from farther, the least turning any route
+  // heading `dir` needs to reach the goal (turnStepsAtLeast) or to turn onto the way it leaves
+  // (no route turns less than the angle between its first and last headings), whichever is
+  // more, so that a move that carries the ant straight past its island is priced for the way back.
   double legEndTurnPrice(Cell to, std::size_t target, int dir) const {
     const Cell island = waypoints[target];
-    const int exit = exit_dir.empty() ? -1 : exit_dir[target];
-    if (to == island) return exit >= 0 ? turn_price[turnSteps(dir, exit)] : 0.0;
+    const std::array<double, kDirections>& leave = leave_price[target];
+    if (to == island) return leave[dir];
     const int last = directionBetween(to, island);
     if (last < 0)
-      return turn_price[std::max(turnStepsAtLeast(dir, island.row - to.row, island.col - to.col),
-                                 exit >= 0 ? turnSteps(dir, exit) : 0)];
-    return turn_price[turnSteps(dir, last)] + (exit >= 0 ? turn_price[turnSteps(last, exit)] : 0.0);
+      return std::max(turn_price[turnStepsAtLeast(dir, island.row - to.row, island.col - to.col)], leave[dir]);
+    return turn_price[turnSteps(dir, last)] + leave[last];
   }
 
   // d_jg: what reaching waypoint `target` from `next` costs: the leg's exact route cost
@@ -312,11 +328,14 @@ class AntWalker {
       route.dirs.push_back(static_cast<std::uint8_t>(chosen));
       route.length += stepLength(chosen);
       route.cost += grid.moveCostInto(grid.index(here), chosen);
-      if (setup.prices_turns && previous_dir >= 0) route.cost += setup.turn_price[turnSteps(previous_dir, chosen)];
+      if (setup.prices_turns)
+        route.cost += previous_dir >= 0 ? setup.turn_price[turnSteps(previous_dir, chosen)] : setup.start_turn_price[chosen];
       visit(next);
       previous_dir = chosen;
       current = next;
-      if (setup.waypoint_of_cell[next] == static_cast<std::int32_t>(target)) ++target;
+      if (setup.waypoint_of_cell[next] == static_cast<std::int32_t>(target) && ++target == setup.waypoints.size() &&
+          setup.prices_turns)
+        route.cost += setup.leave_price.back()[chosen];  // the turn onto the goal heading
     }
     route.complete = true;
   }

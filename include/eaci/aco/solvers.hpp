@@ -66,9 +66,11 @@ constexpr std::size_t kTwoSidedSearchCells = std::size_t{256} * 256;
 // `buffers`: the exact searches' buffers, kept by the caller between plans.
 // `stop`: ticked by every step's loops (auxiliary map, flood, island scan, the search, the leg
 // fields); once it says stop the plan is unfinished (the caller reads stop->stopped()): a
-// geodesic plan keeps its route when the search had finished.
+// geodesic plan keeps its route when the search had finished. `ends`: the headings at the
+// route's ends, priced with turn_cost (grid/end_headings.hpp).
 inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
-                              const RouteSearchBuffers& buffers = {}, StopPoll* stop = nullptr) {
+                              const RouteSearchBuffers& buffers = {}, StopPoll* stop = nullptr,
+                              const EndHeadings& ends = {}) {
   if (params.island_strategy == IslandStrategy::kPaper) {
     const CostGrid auxiliary = auxiliaryMap(grid, start, goal, AuxiliaryBorder::kFree, stop);
     if (stop != nullptr && stop->stopped()) return {};
@@ -80,7 +82,7 @@ inline IslandPlan planIslands(const CostGrid& grid, Cell start, Cell goal, const
   if (params.turn_cost > 0 && grid.cellCount() <= kMaxHeadingSearchCells) {
     HeadingSearch own_search;
     TurningPath cheapest = (buffers.turning ? *buffers.turning : own_search)
-                               .cheapestPath(grid, start, goal, params.turn_cost, stop);
+                               .cheapestPath(grid, start, goal, params.turn_cost, stop, ends);
     plan.route = std::move(cheapest.path);
     plan.route_cost = cheapest.combined_cost;
   } else if (grid.cellCount() >= kTwoSidedSearchCells) {
@@ -120,17 +122,18 @@ inline ColonyRegion colonyRegion(const CostGrid& grid, const IslandPlan& islands
 // `search_buffers`, `colony_workspace`: buffers and threads kept by the caller between plans
 // (null: this call's own). The result's region and pheromone field hold the colony
 // workspace's memory; a caller that keeps the workspace hands them back to it when done.
+// `ends`: the headings at the route's ends, priced with turn_cost (grid/end_headings.hpp).
 inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                               const StopCheck& should_stop = {}, const IterationObserver& observer = {},
                               const RouteSearchBuffers& search_buffers = {},
-                              ColonyWorkspace* colony_workspace = nullptr) {
+                              ColonyWorkspace* colony_workspace = nullptr, const EndHeadings& ends = {}) {
   ColonyResult result;
   StopPoll setup_poll(should_stop, 0);  // one counter through all the set-up steps
   const auto stopped_in_setup = [&] {
     if (setup_poll.stopped() || setup_poll.askNow()) result.run.interrupted = true;
     return result.run.interrupted;
   };
-  IslandPlan islands = planIslands(grid, start, goal, params, search_buffers, &setup_poll);
+  IslandPlan islands = planIslands(grid, start, goal, params, search_buffers, &setup_poll, ends);
   if (setup_poll.stopped()) {  // geodesic: the search's route if it had finished (else empty)
     result.run.interrupted = true;
     if (!islands.route.empty()) {
@@ -162,8 +165,8 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
   }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kTurningAware,
                   params.beta, params.epsilon, std::move(islands.leg_cost));
-  setup.priceTurns(params.turn_cost);
-  if (setup.prices_turns && !islands.route.empty()) setup.setExitDirections(islands.route);
+  setup.priceTurns(params.turn_cost, ends);
+  if (!islands.route.empty()) setup.setExitDirections(islands.route);
   if (observer) observer(0, result.pheromone, setup.region);
   Colony<EaciRules> colony(setup, result.pheromone, params, EaciRules(params, euclidean(start, goal)),
                            islands.route_cost, colony_workspace);
@@ -174,11 +177,12 @@ inline ColonyResult solveEaci(const CostGrid& grid, Cell start, Cell goal, const
 
 // The colonies on the whole map with waypoints S and E (classic ACO, MAACO): the region, the
 // initial pheromone `initial(region, reuse, poll)` (poll: stopped, the run is interrupted),
-// the walk with `rules`. `colony_workspace` as for solveEaci.
+// the walk with `rules`. `colony_workspace` and `ends` as for solveEaci.
 template <class Rules, class InitialPheromone>
 ColonyResult solveOnWholeMap(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params, Rules rules,
                              const InitialPheromone& initial, const StopCheck& should_stop,
-                             const IterationObserver& observer, ColonyWorkspace* colony_workspace) {
+                             const IterationObserver& observer, ColonyWorkspace* colony_workspace,
+                             const EndHeadings& ends) {
   ColonyResult result;
   result.waypoints = {start, goal};
   StopPoll setup_poll(should_stop, 0);
@@ -194,7 +198,7 @@ ColonyResult solveOnWholeMap(const CostGrid& grid, Cell start, Cell goal, const 
   }
   WalkSetup setup(grid, std::move(region), result.pheromone, result.waypoints, HeuristicRule::kGoalDistance,
                   params.beta, params.epsilon);
-  setup.priceTurns(params.turn_cost);
+  setup.priceTurns(params.turn_cost, ends);
   if (observer) observer(0, result.pheromone, setup.region);
   Colony<Rules> colony(setup, result.pheromone, params, std::move(rules), std::numeric_limits<double>::infinity(),
                        colony_workspace);
@@ -206,26 +210,26 @@ ColonyResult solveOnWholeMap(const CostGrid& grid, Cell start, Cell goal, const 
 // Classic ACO (Eq. 8-11): uniform initial pheromone aco_tau0, heuristic 1/d_jg, evaporation aco_rho.
 inline ColonyResult solveClassicAco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                                     const StopCheck& should_stop = {}, const IterationObserver& observer = {},
-                                    ColonyWorkspace* colony_workspace = nullptr) {
+                                    ColonyWorkspace* colony_workspace = nullptr, const EndHeadings& ends = {}) {
   const auto uniform = [&](const ColonyRegion&, PheromoneField field, StopPoll&) {
     field.reset(grid.cellCount(), params.aco_tau0, params.alpha);
     return field;
   };
   return solveOnWholeMap(grid, start, goal, params, ClassicAcoRules(params), uniform, should_stop, observer,
-                         colony_workspace);
+                         colony_workspace, ends);
 }
 
 // MAACO (re-implemented from public descriptions, not the authors' code; docs/algorithm.md):
 // elliptical initial pheromone (C = maaco_tau0), pheromone weight maaco_alpha, MaacoRules.
 inline ColonyResult solveMaaco(const CostGrid& grid, Cell start, Cell goal, const ColonyParameters& params,
                                const StopCheck& should_stop = {}, const IterationObserver& observer = {},
-                               ColonyWorkspace* colony_workspace = nullptr) {
+                               ColonyWorkspace* colony_workspace = nullptr, const EndHeadings& ends = {}) {
   const auto elliptical = [&](const ColonyRegion& region, PheromoneField field, StopPoll& poll) {
     return ellipticalInitialPheromone(grid, region, start, goal, params.maaco_tau0, params.maaco_alpha,
                                       std::move(field), &poll);
   };
   return solveOnWholeMap(grid, start, goal, params, MaacoRules(params, start, goal, std::max(grid.width(), grid.height())),
-                         elliptical, should_stop, observer, colony_workspace);
+                         elliptical, should_stop, observer, colony_workspace, ends);
 }
 
 }  // namespace eaci

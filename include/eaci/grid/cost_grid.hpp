@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/grid/grid_view.hpp"
 #include "eaci/grid/moves.hpp"
 
@@ -274,12 +275,14 @@ inline double routeCost(const CostGrid& grid, const CellPath& route) {
 }
 
 // A route's combined cost (issue #30): its cost (routeCost) plus turn_cost x its heading change
-// in radians (routeTurnSteps x kTurnStepRadians); routeCost itself when turn_cost is 0;
-// +infinity when it is not a route.
-inline double combinedRouteCost(const CostGrid& grid, const CellPath& route, double turn_cost) {
+// in radians (routeTurnSteps x kTurnStepRadians), and with end headings the turns onto its first
+// move and off its last (endTurnRadians); routeCost itself when turn_cost is 0; +infinity when
+// it is not a route.
+inline double combinedRouteCost(const CostGrid& grid, const CellPath& route, double turn_cost,
+                                const EndHeadings& ends = {}) {
   const double cost = routeCost(grid, route);
   if (turn_cost == 0.0 || !std::isfinite(cost)) return cost;
-  return cost + turn_cost * static_cast<double>(routeTurnSteps(route)) * kTurnStepRadians;
+  return cost + turn_cost * (static_cast<double>(routeTurnSteps(route)) * kTurnStepRadians + endTurnRadians(route, ends));
 }
 
 }  // namespace eaci

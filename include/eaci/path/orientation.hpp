@@ -40,6 +40,19 @@ inline OrientationMode orientationModeFromString(const std::string& text) {
                               "leftward, rightward (or 0-6)");
 }
 
+// The way a robot at `yaw` travels along a route oriented by `mode`: its yaw, or (backward,
+// leftward, rightward: the route runs along the robot's -x, +y or -y axis) the yaw turned by
+// pi, +pi/2 or -pi/2; NaN stays NaN. The planners price the turn from it onto the first move
+// and off the last move onto the goal's (PlanOptions::end_headings).
+inline double travelHeading(double yaw, OrientationMode mode) {
+  switch (mode) {
+    case OrientationMode::kBackward: return yaw + M_PI;
+    case OrientationMode::kLeftward: return yaw + M_PI / 2;
+    case OrientationMode::kRightward: return yaw - M_PI / 2;
+    default: return yaw;
+  }
+}
+
 namespace detail {
 inline double shortestAngle(double from, double to) { return std::remainder(to - from, 2.0 * M_PI); }
 

@@ -14,6 +14,7 @@
 
 #include "eaci/grid/cell.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/path/smoothing.hpp"
 
 namespace eaci {
@@ -21,21 +22,28 @@ namespace eaci {
 // What driving the polyline of cell centres `corners` costs by the planners' objective: each
 // segment's cost (segmentCostAndPeak: its length in every cell weighted like a move into that
 // cell) plus turn_cost x the heading change at each inner corner, in radians (the turning term
-// of the search over (cell, heading) and the colonies). +infinity when a segment touches an
+// of the search over (cell, heading) and the colonies), and at its ends from the start heading
+// and onto the goal heading of `ends` where it has them. +infinity when a segment touches an
 // obstacle or leaves the map. Consecutive equal cells add nothing and turn nothing.
-inline double polylineObjective(const CostGrid& grid, const CellPath& corners, double turn_cost) {
+inline double polylineObjective(const CostGrid& grid, const CellPath& corners, double turn_cost,
+                                const EndHeadings& ends = {}) {
   double cost = 0.0;
-  bool heading_known = false;
-  double heading = 0.0;
+  bool heading_known = ends.hasStart();
+  double heading = ends.start;
+  bool moved = false;
   for (std::size_t k = 1; k < corners.size(); ++k) {
     if (corners[k] == corners[k - 1]) continue;
     cost += segmentCost(grid, corners[k - 1], corners[k]);
     if (!std::isfinite(cost)) return std::numeric_limits<double>::infinity();
-    const double next = std::atan2(corners[k].row - corners[k - 1].row, corners[k].col - corners[k - 1].col);
+    // the grid angle (north is row - 1, grid/end_headings.hpp)
+    const double next = std::atan2(corners[k - 1].row - corners[k].row, corners[k].col - corners[k - 1].col);
     if (heading_known) cost += turn_cost * std::abs(std::remainder(next - heading, 2 * M_PI));
     heading = next;
     heading_known = true;
+    moved = true;
   }
+  if (ends.hasGoal() && moved)
+    cost += turn_cost * std::abs(std::remainder(ends.goal - heading, 2 * M_PI));
   return cost;
 }
 
