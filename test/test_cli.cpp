@@ -298,6 +298,31 @@ TEST_F(CliTest, TurnCostPricesTheCornersOfAStarRoutes) {
   EXPECT_NE(expectBadInput(args + " --turn-cost nan").find("turn_cost"), std::string::npos);
 }
 
+// --start-yaw, --goal-yaw: the turns onto the route and off it are priced too. The test reads
+// the first and last moves off the route and measures their angles to the headings itself.
+TEST_F(CliTest, StartAndGoalYawsPriceTheTurnsAtTheRoutesEnds) {
+  const std::string map = paperMap("paper-20x20.txt");
+  ASSERT_NO_FATAL_FAILURE(requireMap(map));
+  const std::string args =
+      "--map " + quote(map) + " --start 0,0 --goal 19,19 --algorithm astar --set allow_corner_cutting=true --turn-cost 0.5";
+  constexpr double kPi = 3.14159265358979323846;
+  CliRun r;
+  const json j = runJson(args + " --start-yaw 90 --goal-yaw -135", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json& path = j["path"];
+  ASSERT_GE(path.size(), 2u);
+  // The angle of the move a -> b (rows down, so north is row - 1) to a heading in degrees.
+  const auto turn = [&](const json& a, const json& b, double heading_deg) {
+    const double move = std::atan2(-(b[0].get<double>() - a[0].get<double>()), b[1].get<double>() - a[1].get<double>());
+    return std::abs(std::remainder(move - heading_deg * kPi / 180.0, 2 * kPi));
+  };
+  const double ends = turn(path[0], path[1], 90.0) + turn(path[path.size() - 2], path.back(), -135.0);
+  EXPECT_GT(ends, 0.0);  // from the top left, facing north, to the bottom right, facing south-west: both turn
+  EXPECT_NEAR(j["combined_cost"].get<double>(),
+              j["cost"].get<double>() + 0.5 * (j["total_turn_deg"].get<double>() * kPi / 180.0 + ends), 1e-9);
+  EXPECT_NE(expectBadInput(args + " --goal-yaw 400").find("--goal-yaw"), std::string::npos);
+}
+
 TEST_F(CliTest, SameSeedSameRoute) {
   const std::string map = paperMap("paper-20x20.txt");
   ASSERT_NO_FATAL_FAILURE(requireMap(map));

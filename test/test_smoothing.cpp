@@ -122,6 +122,43 @@ TEST(Smoothing, ATolerancePassesNearerTheCorner) {
   EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 1.0), (CellPath{{0, 0}, {0, 2}, {2, 2}}));
 }
 
+TEST(Smoothing, AShortcutAnswersForItsTurnAtTheRoutesEnds) {
+  // Free cells (a segment costs its length). The route runs north from (8,4) to (4,4), then
+  // north-west to the goal (0,0): 4 + 4 sqrt 2 = 9.657. The straight shortcut (8,4) -> (0,0),
+  // sqrt 80 = 8.944, heads 116.6 degrees (atan2(8, -4)), 18.4 off a goal heading of 135 (the
+  // last leg's, which turns nothing onto it) and 26.6 off a start heading of 90 (the first
+  // leg's). With turn_cost 1 it still pays: 8.944 + 0.322 < 9.657 (and + 0.464 at the start).
+  // With turn_cost 3 it does not (8.944 + 0.965 > 9.657): the goal keeps its last leg, from
+  // the earliest cell whose shortcut into the goal is allowed. (4,4) -> (0,0) lies on the
+  // leg; (5,4) -> (0,0) heads 128.7 degrees: 6.403 + 3 x 0.110 > 1 + 4 sqrt 2 = 6.657.
+  const CostGrid grid = open(9, 6);
+  const CellPath route{{8, 4}, {7, 4}, {6, 4}, {5, 4}, {4, 4}, {3, 3}, {2, 2}, {1, 1}, {0, 0}};
+  const CellPath straight{{8, 4}, {0, 0}}, two_legs{{8, 4}, {4, 4}, {0, 0}};
+  EXPECT_EQ(eaci::smoothRoute(grid, route), straight);
+  eaci::EndHeadings goal_heading;
+  goal_heading.goal = 3 * M_PI / 4;
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.0, 1.0, goal_heading), straight);
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.0, 3.0, goal_heading), two_legs);
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.0, 0.0, goal_heading), straight);  // not priced
+  // The start heading of 90 degrees, alone: (8,4) -> (3,3) heads 101.3 degrees, 11.3 off it,
+  // and 5.099 + 3 x 0.197 > 4 + sqrt 2 = 5.414: the first leg stays.
+  eaci::EndHeadings start_heading;
+  start_heading.start = M_PI / 2;
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.0, 1.0, start_heading), straight);
+  EXPECT_EQ(eaci::smoothRoute(grid, route, nullptr, 0.0, 3.0, start_heading), two_legs);
+  // And the planner smooths with them: A* (turn_cost 3, the heading search) from (8,4) to
+  // (0,0) heading north-west at the goal ends on a north-west leg.
+  eaci::Parameters params;
+  params.turn_cost = 3.0;
+  eaci::PlanOptions options;
+  options.end_headings = goal_heading;
+  const eaci::PlanResult r = eaci::plan(grid, Cell{8, 4}, Cell{0, 0}, eaci::Algorithm::kAStar, params, options);
+  ASSERT_TRUE(r.success()) << r.error;
+  ASSERT_GE(r.smoothed_path.size(), 2u);
+  const Cell before = r.smoothed_path[r.smoothed_path.size() - 2];
+  EXPECT_EQ(before.row, before.col) << "the last segment runs along the north-west diagonal";
+}
+
 TEST(Smoothing, PlannerPassesTheTolerance) {
   // A 3 x 3 band of cost 20 but (1,0), cost 24. The only shortest route from (0,0) to (2,2) is
   // the diagonal (0,0) (1,1) (2,2), peak 20; the straight segment (0,0) -> (2,2) touches (1,0)

@@ -376,7 +376,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   r.length = pathLength(r.path);
   r.total_turn_deg = totalTurnDegrees(r.path);
   const Clock::time_point smoothing_start = Clock::now();
-  r.smoothed_path = params.smooth_path ? roundCorners(grid, smoothRoute(grid, r.path, &poll, params.smooth_tolerance),
+  r.smoothed_path = params.smooth_path ? roundCorners(grid, smoothRoute(grid, r.path, &poll, params.smooth_tolerance,
+                                                                   params.turn_cost, options.end_headings),
                                                        params.round_corners, params.smooth_tolerance, &poll)
                                         : r.path;
   r.times.smoothing = since(smoothing_start);

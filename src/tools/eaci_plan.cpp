@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -27,6 +29,7 @@
 #include "eaci/aco/auxiliary_map.hpp"
 #include "eaci/planner/parameters.hpp"
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/grid/cell_numbering.hpp"
 #include "eaci/grid/inflation.hpp"
 #include "eaci/grid/nearest_free.hpp"
@@ -99,6 +102,8 @@ struct Options {
   std::string algorithm = "eaci";
   std::string seed;
   std::string turn_cost;  // = --set turn_cost=...
+  double start_yaw_deg = std::numeric_limits<double>::quiet_NaN();  // --start-yaw: degrees, NaN = none
+  double goal_yaw_deg = std::numeric_limits<double>::quiet_NaN();   // --goal-yaw
   std::string params_file;
   std::vector<std::string> sets;
   std::string json_file;
@@ -326,9 +331,15 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
   // The route the search found, cell to neighbouring cell, and the one a robot drives.
   s << "grid route:     length " << formatNumber(r.length) << " cells = " << formatNumber(r.length * res)
     << " m, total turn " << formatNumber(r.total_turn_deg, 1) << " deg (" << r.path.size() << " cells, 8-connected)\n";
-  if (context.parameters.turn_cost > 0)
+  if (context.parameters.turn_cost > 0) {
+    const double end_turn_deg = eaci::endTurnRadians(r.path, context.end_headings) * 180.0 / M_PI;
     s << "combined cost:  " << formatNumber(r.combined_cost) << " = cost " << formatNumber(r.cost) << " + turn_cost "
-      << formatNumber(context.parameters.turn_cost) << " x " << formatNumber(r.total_turn_deg, 1) << " deg in radians\n";
+      << formatNumber(context.parameters.turn_cost) << " x " << formatNumber(r.total_turn_deg + end_turn_deg, 1)
+      << " deg in radians";
+    if (context.end_headings.hasStart() || context.end_headings.hasGoal())
+      s << " (" << formatNumber(end_turn_deg, 1) << " of them onto the route and off it, --start-yaw/--goal-yaw)";
+    s << "\n";
+  }
   if (context.parameters.smooth_path)
     s << "smoothed route: length " << formatNumber(r.smoothed_length) << " cells = " << formatNumber(r.smoothed_length * res)
       << " m, total turn " << formatNumber(eaci::totalTurnDegrees(r.smoothed_path), 1) << " deg ("
@@ -382,6 +393,14 @@ int run(int argc, char** argv) {
                  "the cost of one radian of heading change between consecutive moves, added to a route's cost "
                  "(= --set turn_cost=..., overrides --params and --set; default 0); every algorithm then minimises "
                  "cost + turn_cost x turn, astar exactly");
+  app.add_option("--start-yaw", o.start_yaw_deg,
+                 "degrees counter-clockwise from east (+x; 90 = north, up the map): the way the robot faces at the "
+                 "start; with --turn-cost the turn onto the first move is priced like a corner (default: none)")
+      ->check(CLI::Range(-360.0, 360.0));
+  app.add_option("--goal-yaw", o.goal_yaw_deg,
+                 "degrees, as --start-yaw: the way the robot must face at the goal; with --turn-cost the turn off "
+                 "the last move onto it is priced (default: none)")
+      ->check(CLI::Range(-360.0, 360.0));
   app.add_option("--params", o.params_file, "flat YAML mapping of parameter names to values");
   app.add_option("--set", o.sets, "set one parameter, key=value (repeatable, applied in order after --params)")
       ->allow_extra_args(false);
@@ -500,6 +519,8 @@ int run(int argc, char** argv) {
   eaci::PlanOptions options;
   options.record_pheromone = !o.png_file.empty() && algorithm != eaci::Algorithm::kAStar;
   options.should_stop = [](int) { return g_interrupted != 0; };
+  options.end_headings = {o.start_yaw_deg * M_PI / 180.0, o.goal_yaw_deg * M_PI / 180.0};  // NaN: none
+  context.end_headings = options.end_headings;
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   const auto t0 = std::chrono::steady_clock::now();

@@ -8,6 +8,7 @@
 
 #include "eaci/planner/parameters.hpp"
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/io/occupancy_map.hpp"
 #include "eaci/planner.hpp"
 
@@ -23,6 +24,7 @@ struct PlanContext {
   std::optional<Cell> goal;
   std::optional<Cell> requested_goal;   // the goal asked for, when --tolerance moved it to `goal`
   Parameters parameters;                // as used (or as far as they were read)
+  EndHeadings end_headings;             // --start-yaw, --goal-yaw (radians; NaN: none)
   std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
   // The cells the planners read when they are not the map's own (--inflate: the map's costmap_2d
   // costs); min_clearance_m and mean_cell_cost are measured on them. Empty: the map.

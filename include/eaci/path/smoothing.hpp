@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "eaci/grid/cost_grid.hpp"
+#include "eaci/grid/end_headings.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
@@ -121,35 +122,73 @@ inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
 // route's length (each shortcut tried is walked cell by cell, once, until it fails): `stop` is
 // ticked by the cells each try spans, and once it says stop the route is smoothed up to where
 // it got and goes on cell by cell from there (as valid as the whole smoothed route).
+// With end headings and turn_cost > 0 (PlanOptions::end_headings) a shortcut from the start or
+// into the goal also answers for its turn from the start heading or onto the goal heading: it
+// may cost what the stretch allows plus turn_cost x (the turn of the stretch's end move - its
+// own). With a goal heading the last segment is chosen first, from the earliest cell of the
+// route whose shortcut into the goal is allowed (scanning back from the goal, up to the first
+// that is not), and the rest is pulled up to that cell: a long straight segment that cuts into
+// the goal across its heading does not replace the route's last leg (issue #30: the car crawls
+// into a goal it enters far off its yaw).
 inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPoll* stop = nullptr,
-                            double tolerance = 0.0) {
+                            double tolerance = 0.0, double turn_cost = 0.0, const EndHeadings& ends = {}) {
   if (route.size() < 3 || !std::isfinite(routeCost(grid, route))) return route;
+  const std::size_t last = route.size() - 1;
   const auto moveCost = [&](std::size_t k) {  // the move into route[k]
     const int dir = directionBetween(route[k - 1], route[k]);
     return dir < 0 ? std::numeric_limits<double>::infinity() : grid.moveCost(route[k - 1], dir);
   };
+  // The turn between a heading and the segment a -> b (grid angles: north is row - 1).
+  const auto turnOnto = [](double heading, Cell a, Cell b) {
+    return std::abs(std::remainder(std::atan2(a.row - b.row, b.col - a.col) - heading, 2.0 * M_PI));
+  };
+  const bool priced_start = turn_cost > 0 && ends.hasStart();
+  const bool priced_goal = turn_cost > 0 && ends.hasGoal();
+  const double start_turn = priced_start ? turnOnto(ends.start, route[0], route[1]) : 0.0;
+  const double goal_turn = priced_goal ? turnOnto(ends.goal, route[last - 1], route[last]) : 0.0;
+  // Whether the straight segment route[i] -> route[j] may replace the stretch between them,
+  // which costs `stretch_cost` and enters no cell costlier than `stretch_peak`.
+  const auto allowed = [&](std::size_t i, std::size_t j, double stretch_cost, int stretch_peak) {
+    double cost_bound = stretch_cost * (1.0 + tolerance) + 1e-9;
+    if (priced_start && i == 0) cost_bound += turn_cost * (start_turn - turnOnto(ends.start, route[i], route[j]));
+    if (priced_goal && j == last) cost_bound += turn_cost * (goal_turn - turnOnto(ends.goal, route[i], route[j]));
+    const int peak_bound = std::min(254, static_cast<int>(std::floor(stretch_peak * (1.0 + tolerance) + 1e-9)));
+    const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, peak_bound);
+    return shortcut.cost <= cost_bound && shortcut.peak <= peak_bound;
+  };
+  std::size_t pulled_to = last;  // the greedy pass below smooths route[0 .. pulled_to]
+  if (priced_goal) {
+    double stretch_cost = moveCost(last);
+    int stretch_peak = std::max<int>(grid.cost(route[last - 1]), grid.cost(route[last]));
+    pulled_to = last - 1;
+    for (std::size_t k = last - 1; k-- > 0;) {
+      if (stop != nullptr && stop->tick(last - k)) break;  // a walk of about last - k cells
+      stretch_cost += moveCost(k + 1);
+      stretch_peak = std::max<int>(stretch_peak, grid.cost(route[k]));
+      if (!allowed(k, last, stretch_cost, stretch_peak)) break;
+      pulled_to = k;
+    }
+  }
   CellPath kept{route.front()};
   std::size_t i = 0;
-  while (i + 1 < route.size()) {
+  while (i < pulled_to) {
     std::size_t best = i + 1;
     double stretch_cost = moveCost(i + 1);
     int stretch_peak = std::max<int>(grid.cost(route[i]), grid.cost(route[i + 1]));
-    for (std::size_t j = i + 2; j < route.size(); ++j) {
+    for (std::size_t j = i + 2; j <= pulled_to; ++j) {
       if (stop != nullptr && stop->tick(j - i)) {  // a walk of about j - i cells
         kept.insert(kept.end(), route.begin() + static_cast<std::ptrdiff_t>(i) + 1, route.end());
         return kept;
       }
       stretch_cost += moveCost(j);
       stretch_peak = std::max<int>(stretch_peak, grid.cost(route[j]));
-      const double cost_bound = stretch_cost * (1.0 + tolerance) + 1e-9;
-      const int peak_bound = std::min(254, static_cast<int>(std::floor(stretch_peak * (1.0 + tolerance) + 1e-9)));
-      const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, peak_bound);
-      if (shortcut.cost > cost_bound || shortcut.peak > peak_bound) break;
+      if (!allowed(i, j, stretch_cost, stretch_peak)) break;
       best = j;
     }
     kept.push_back(route[best]);
     i = best;
   }
+  if (pulled_to < last) kept.push_back(route[last]);
   return kept;
 }
 
