@@ -187,6 +187,11 @@ TEST(Smoothing, RoundCornersCutsARightAngle) {
   const CellPath corner{{0, 0}, {0, 10}, {10, 10}};
   EXPECT_EQ(eaci::roundCorners(grid, corner, 0), corner);
   EXPECT_EQ(eaci::roundCorners(grid, corner, 1), (CellPath{{0, 0}, {0, 5}, {5, 10}, {10, 10}}));
+  // Keeping the last leg (a goal heading priced), the bend before the goal stays; a bend before
+  // it is still cut.
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 2, 0.0, nullptr, true), corner);
+  EXPECT_EQ(eaci::roundCorners(grid, CellPath{{10, 0}, {0, 0}, {0, 10}, {10, 10}}, 1, 0.0, nullptr, true),
+            (CellPath{{10, 0}, {5, 0}, {0, 5}, {0, 10}, {10, 10}}));
   // A second pass cuts both 45-degree corners again: no turn of the result reaches 45 degrees
   // (each is about 22.5, give or take the rounding to cells), and every segment stays on the map.
   const CellPath twice = eaci::roundCorners(grid, corner, 2);

@@ -378,7 +378,8 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
   const Clock::time_point smoothing_start = Clock::now();
   r.smoothed_path = params.smooth_path ? roundCorners(grid, smoothRoute(grid, r.path, &poll, params.smooth_tolerance,
                                                                    params.turn_cost, options.end_headings),
-                                                       params.round_corners, params.smooth_tolerance, &poll)
+                                                       params.round_corners, params.smooth_tolerance, &poll,
+                                                       params.turn_cost > 0 && options.end_headings.hasGoal())
                                         : r.path;
   r.times.smoothing = since(smoothing_start);
   r.interrupted = r.interrupted || poll.stopped();

@@ -233,9 +233,11 @@ inline constexpr double kBendCornerSpacing = 3.0;
 // for the next bend). A pass splits a bend's turn in two (90 degrees become two corners of
 // about 45), which a car takes with less slowing than one sharp bend (docs/ros.md, "Driving to
 // the lab goals"). Start and goal stay. `stop` is ticked by the cells each try walks; once it
-// says stop the rest stays as it is.
+// says stop the rest stays as it is. `keep_last_leg` (a goal heading is priced: smoothRoute)
+// leaves the bend before the goal as it is, so the route arrives along its whole last leg and
+// not along a cut that shortens it.
 inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int passes, double tolerance = 0.0,
-                             StopPoll* stop = nullptr) {
+                             StopPoll* stop = nullptr, bool keep_last_leg = false) {
   const auto distance = [](Cell a, Cell b) { return std::hypot(a.col - b.col, a.row - b.row); };
   CellPath route = corners;
   for (int pass = 0; pass < passes && route.size() >= 3; ++pass) {
@@ -252,7 +254,8 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
       replaced.push_back(n);
       bool cut = false;
       const std::size_t walk = static_cast<std::size_t>(to_p + to_n) + 1;
-      if (stop == nullptr || !stop->tick(walk)) {
+      const bool last_bend = j + 2 == route.size();
+      if (!(keep_last_leg && last_bend) && (stop == nullptr || !stop->tick(walk))) {
         const SegmentCost bend = polylineCostAndPeak(grid, replaced);
         const double cost_bound = bend.cost * (1.0 + tolerance) + 1e-9;
         for (double d = std::min(to_p, to_n / 2); std::isfinite(bend.cost) && d >= 1.0 && !cut; d /= 2) {
