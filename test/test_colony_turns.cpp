@@ -231,7 +231,7 @@ TEST(ColonyTurns, EaciReachesTheCombinedOptimumThroughTheLabsInflatedGaps) {
                             eaci::inflatedCostsInterpretation(false));
   const Cell start = *map.worldToCell({4.2, 0.5});
   // The second goal with headings at both ends, as the robot plans (facing west at the start,
-  // south at the goal; price_end_headings).
+  // south at the goal, as eaci_plan --start-yaw 180 --goal-yaw -90).
   eaci::PlanOptions with_ends;
   with_ends.end_headings = {kPi, -kPi / 2};
   for (const auto& [goal_xy, options] : {std::pair<Eigen::Vector2d, eaci::PlanOptions>{{1.1, 2.2}, {}},

@@ -31,7 +31,7 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"cost_scaling_factor", fieldAccess<Options>("cost_scaling_factor", &Options::cost_scaling_factor)},
       {"landmarks", fieldAccess<Options>("landmarks", &Options::landmarks)},
       {"route_hysteresis", fieldAccess<Options>("route_hysteresis", &Options::route_hysteresis)},
-      {"price_end_headings", fieldAccess<Options>("price_end_headings", &Options::price_end_headings)},
+      {"price_goal_heading", fieldAccess<Options>("price_goal_heading", &Options::price_goal_heading)},
       {"orientation_mode",
        {[](Options& o, const std::string& v) {
           try {

@@ -35,12 +35,14 @@ struct RosPlannerOptions {
   // the new route by the planner's measure (eaci/path/route_hysteresis.hpp): successive plans
   // do not swap between routes of nearly equal cost. 0 = every plan sends its own route.
   double route_hysteresis = 0.0;
-  // With turn_cost > 0, a route also pays turn_cost x the turn from the robot's heading onto
-  // its first move and from its last move onto the goal's heading (eaci::EndHeadings; the
-  // headings of orientation_mode, travelHeading): it leaves the way the robot faces and arrives
-  // lined up with the goal where the costs are close. A pose whose quaternion is not a rotation
-  // (all zeros) has no heading. false: the ends turn nothing.
-  bool price_end_headings = true;
+  // With turn_cost > 0, a route also pays turn_cost x the turn from its last move onto the
+  // goal's heading (eaci::EndHeadings; the heading orientation_mode drives along, travelHeading):
+  // it arrives lined up with the goal where the costs are close, and the smoother keeps the
+  // leg it arrives along. A goal whose quaternion is not a rotation (all zeros) has no heading.
+  // The robot's own heading is not priced: on replans while the car drives, a priced start
+  // heading kept the route going straight on past a bend it should have started to take
+  // (docs/ros.md, "Arriving lined up"). false: the goal turns nothing.
+  bool price_goal_heading = true;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base

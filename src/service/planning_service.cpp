@@ -381,9 +381,8 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
-  if (options.price_end_headings)  // grid angles are the costmap frame's yaws (y up the rows)
-    plan_options.end_headings = {eaci::travelHeading(request.start_yaw, options.orientation_mode),
-                                 eaci::travelHeading(request.goal_yaw, options.orientation_mode)};
+  if (options.price_goal_heading)  // grid angles are the costmap frame's yaws (y up the rows)
+    plan_options.end_headings.goal = eaci::travelHeading(request.goal_yaw, options.orientation_mode);
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
   const eaci::CostGrid& grid = mirror.grid();
   reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);

@@ -76,7 +76,7 @@ struct PlanRequest {
   // start can reach (navfn's rule): the goal itself when free and reachable.
   double tolerance = -1.0;
   // rad, in the costmap's frame (its origin's yaw ignored, as positions): the robot's yaw and the
-  // goal's; NaN: none (price_end_headings)
+  // goal's; NaN: none. The goal's is priced (price_goal_heading), the robot's is not.
   double start_yaw = std::numeric_limits<double>::quiet_NaN();
   double goal_yaw = std::numeric_limits<double>::quiet_NaN();
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)

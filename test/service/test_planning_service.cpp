@@ -378,8 +378,8 @@ TEST(PlanningService, AReplanKeepsTheRouteSentLastWhileItIsNotMuchDearer) {
   EXPECT_FALSE(service.plan(dear_below, request(dear_below, {10, 2}, {10, 38})).kept_previous_route);
 }
 
-// price_end_headings: with turn_cost > 0 the route pays for the turn from the robot's yaw onto
-// it and off it onto the goal's yaw. 5 x 3 open cells, from the bottom left to the top right:
+// price_goal_heading: with turn_cost > 0 the route pays for the turn off it onto the goal's yaw
+// (not for the turn from the robot's yaw onto it). 5 x 3 open cells, from the bottom left to the top right:
 // the shortest routes NE NE E E and E E NE NE turn 45 degrees each (test_heading_search.cpp's
 // hand case). A goal yaw of 45 degrees (north-east) picks the second, 0 (east) the first; a
 // robot that backs along its routes (orientation_mode backward) with a goal yaw of 225 degrees
@@ -409,13 +409,21 @@ TEST(PlanningService, TheGoalsYawPicksTheRouteThatArrivesLinedUp) {
   const eaci::PlanResult south = plan_with_goal_yaw(-M_PI / 2);  // 90 degrees off east, the least
   EXPECT_NEAR(south.combined_cost, shortest + M_PI / 4 + M_PI / 2, 1e-9);
   EXPECT_TRUE(std::isnan(request(costmap, {2, 0}, {0, 4}).goal_yaw));  // no yaw by default: nothing priced
+  // The robot's own yaw is not priced: facing west, the route and its cost are the same.
+  PlanRequest facing_west = request(costmap, {2, 0}, {0, 4});
+  facing_west.start_yaw = M_PI;
+  facing_west.goal_yaw = M_PI / 4;
+  const PlanReply west = service.plan(costmap, facing_west);
+  ASSERT_TRUE(west.ok()) << west.error;
+  EXPECT_EQ(west.result.path, north_east.path);
+  EXPECT_NEAR(west.result.combined_cost, shortest + M_PI / 4, 1e-9);
   config.options.orientation_mode = eaci::OrientationMode::kBackward;
   configure(service, config);
   const eaci::PlanResult backing = plan_with_goal_yaw(M_PI / 4 + M_PI);
   ASSERT_EQ(backing.path.size(), 5u);
   EXPECT_EQ(backing.path[3], (eaci::Cell{1, 3}));
   config.options.orientation_mode = eaci::OrientationMode::kForward;
-  config.options.price_end_headings = false;
+  config.options.price_goal_heading = false;
   configure(service, config);
   EXPECT_NEAR(plan_with_goal_yaw(-M_PI / 2).combined_cost, shortest + M_PI / 4, 1e-9);
 }
