@@ -3,7 +3,9 @@
 of the true pose): per goal, the heading it arrived with (its displacement over the last second before
 it first came within 0.1 m of the goal), the goal's yaw as drive_goals.py sends it (the straight line
 from where the car set off: the previous goal, or --start for the first), the angle between them, and
-the seconds it spent below 0.2 m/s (speed averaged over 0.5 s) in the stretch that ends at the goal.
+the seconds it spent below 0.2 m/s (speed averaged over 0.5 s) in the stretch that ends at the goal,
+and every other slow stretch of 0.3 s or more on the way (where, and how long: at the start, a
+turn in place; on the way, a bend taken slowly).
 A car that arrives far off the goal's yaw crawls and turns there (docs/ros.md, "Arriving lined up").
 
 Usage:
@@ -29,7 +31,8 @@ def angle_between(a, b):
 
 
 def approaches(trace, goals, start):
-    """Rows (goal, arrival heading deg, goal yaw deg, off deg, slow s at the goal) for one trace."""
+    """Rows (goal, arrival heading deg, goal yaw deg, off deg, slow s at the goal, [(s, x, y) of the
+    slow stretches before it]) for one trace."""
     data = np.genfromtxt(trace, delimiter=",", names=True)
     t, x, y = data["t"], data["x"], data["y"]
     dt = np.diff(t)
@@ -40,7 +43,7 @@ def approaches(trace, goals, start):
     for gx, gy in goals:
         near = np.nonzero(np.hypot(x[begin:] - gx, y[begin:] - gy) < 0.1)[0]
         if len(near) == 0:
-            rows.append(((gx, gy), None, None, None, None))
+            rows.append(((gx, gy), None, None, None, None, []))
             break
         i = begin + int(near[0])
         j = int(np.searchsorted(t, t[i] - 1.0))
@@ -49,7 +52,18 @@ def approaches(trace, goals, start):
         k = i - 1  # the slow stretch that runs into the goal
         while k > begin and slow[k]:
             k -= 1
-        rows.append(((gx, gy), heading, goal_yaw, angle_between(heading, goal_yaw), float(dt[k + 1:i].sum())))
+        stretches, m = [], begin
+        while m <= k:
+            if slow[m]:
+                n = m
+                while n <= k and slow[n]:
+                    n += 1
+                if t[n] - t[m] >= 0.3:
+                    stretches.append((float(dt[m:n].sum()), x[m], y[m]))
+                m = n
+            else:
+                m += 1
+        rows.append(((gx, gy), heading, goal_yaw, angle_between(heading, goal_yaw), float(dt[k + 1:i].sum()), stretches))
         begin, previous = i, (gx, gy)
     return rows
 
@@ -62,16 +76,17 @@ def main():
     args = parser.parse_args()
     goals = points(args.goals) if args.goals else LAB_GOALS
     start = points(args.start)[0] if args.start else LAB_START
-    print("| trace | goal | arrived heading | goal yaw | off | slow at the goal |")
-    print("|---|---|---:|---:|---:|---:|")
+    print("| trace | goal | arrived heading | goal yaw | off | slow at the goal | slow on the way |")
+    print("|---|---|---:|---:|---:|---:|---|")
     for trace in args.traces:
-        for goal, heading, yaw, off, slow in approaches(trace, goals, start):
+        for goal, heading, yaw, off, slow, stretches in approaches(trace, goals, start):
             label = os.path.splitext(os.path.basename(trace))[0]
             if heading is None:
-                print("| %s | (%.2f, %.2f) | not reached | | | |" % (label, goal[0], goal[1]))
+                print("| %s | (%.2f, %.2f) | not reached | | | | |" % (label, goal[0], goal[1]))
             else:
-                print("| %s | (%.2f, %.2f) | %.0f° | %.0f° | %.0f° | %.1f s |" % (label, goal[0], goal[1], heading, yaw,
-                                                                             off, slow))
+                way = "; ".join("%.1f s at (%.2f, %.2f)" % s for s in stretches)
+                print("| %s | (%.2f, %.2f) | %.0f° | %.0f° | %.0f° | %.1f s | %s |" % (label, goal[0], goal[1], heading,
+                                                                                  yaw, off, slow, way))
 
 
 if __name__ == "__main__":
