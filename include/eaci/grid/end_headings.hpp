@@ -26,10 +26,14 @@ struct EndHeadings {
   bool hasGoal() const { return std::isfinite(goal); }
 };
 
-// The turn between heading `yaw` (radians, any turn count) and move direction `dir`: radians in [0, pi].
-inline double turnRadians(double yaw, int dir) {
-  return std::abs(std::remainder(static_cast<double>(dir) * kTurnStepRadians - yaw, 2.0 * M_PI));
-}
+// The turn between two headings (radians, any turn count): radians in [0, pi].
+inline double angleBetween(double a, double b) { return std::abs(std::remainder(a - b, 2.0 * M_PI)); }
+
+// The grid angle of the straight segment from cell a to cell b.
+inline double headingOf(Cell a, Cell b) { return std::atan2(a.row - b.row, b.col - a.col); }
+
+// The turn between heading `yaw` and move direction `dir`: radians in [0, pi].
+inline double turnRadians(double yaw, int dir) { return angleBetween(static_cast<double>(dir) * kTurnStepRadians, yaw); }
 
 // turn_cost x the turn from `yaw` onto each move direction; all 0 without a heading (NaN).
 inline std::array<double, kDirections> headingTurnPrices(double yaw, double turn_cost) {

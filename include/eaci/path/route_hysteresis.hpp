@@ -35,15 +35,14 @@ inline double polylineObjective(const CostGrid& grid, const CellPath& corners, d
     if (corners[k] == corners[k - 1]) continue;
     cost += segmentCost(grid, corners[k - 1], corners[k]);
     if (!std::isfinite(cost)) return std::numeric_limits<double>::infinity();
-    // the grid angle (north is row - 1, grid/end_headings.hpp)
-    const double next = std::atan2(corners[k - 1].row - corners[k].row, corners[k].col - corners[k - 1].col);
-    if (heading_known) cost += turn_cost * std::abs(std::remainder(next - heading, 2 * M_PI));
+    const double next = headingOf(corners[k - 1], corners[k]);
+    if (heading_known) cost += turn_cost * angleBetween(next, heading);
     heading = next;
     heading_known = true;
     moved = true;
   }
   if (ends.hasGoal() && moved)
-    cost += turn_cost * std::abs(std::remainder(ends.goal - heading, 2 * M_PI));
+    cost += turn_cost * angleBetween(ends.goal, heading);
   return cost;
 }
 

@@ -138,20 +138,16 @@ inline CellPath smoothRoute(const CostGrid& grid, const CellPath& route, StopPol
     const int dir = directionBetween(route[k - 1], route[k]);
     return dir < 0 ? std::numeric_limits<double>::infinity() : grid.moveCost(route[k - 1], dir);
   };
-  // The turn between a heading and the segment a -> b (grid angles: north is row - 1).
-  const auto turnOnto = [](double heading, Cell a, Cell b) {
-    return std::abs(std::remainder(std::atan2(a.row - b.row, b.col - a.col) - heading, 2.0 * M_PI));
-  };
   const bool priced_start = turn_cost > 0 && ends.hasStart();
   const bool priced_goal = turn_cost > 0 && ends.hasGoal();
-  const double start_turn = priced_start ? turnOnto(ends.start, route[0], route[1]) : 0.0;
-  const double goal_turn = priced_goal ? turnOnto(ends.goal, route[last - 1], route[last]) : 0.0;
+  const double start_turn = priced_start ? angleBetween(ends.start, headingOf(route[0], route[1])) : 0.0;
+  const double goal_turn = priced_goal ? angleBetween(ends.goal, headingOf(route[last - 1], route[last])) : 0.0;
   // Whether the straight segment route[i] -> route[j] may replace the stretch between them,
   // which costs `stretch_cost` and enters no cell costlier than `stretch_peak`.
   const auto allowed = [&](std::size_t i, std::size_t j, double stretch_cost, int stretch_peak) {
     double cost_bound = stretch_cost * (1.0 + tolerance) + 1e-9;
-    if (priced_start && i == 0) cost_bound += turn_cost * (start_turn - turnOnto(ends.start, route[i], route[j]));
-    if (priced_goal && j == last) cost_bound += turn_cost * (goal_turn - turnOnto(ends.goal, route[i], route[j]));
+    if (priced_start && i == 0) cost_bound += turn_cost * (start_turn - angleBetween(ends.start, headingOf(route[i], route[j])));
+    if (priced_goal && j == last) cost_bound += turn_cost * (goal_turn - angleBetween(ends.goal, headingOf(route[i], route[j])));
     const int peak_bound = std::min(254, static_cast<int>(std::floor(stretch_peak * (1.0 + tolerance) + 1e-9)));
     const SegmentCost shortcut = segmentCostAndPeak(grid, route[i], route[j], cost_bound, peak_bound);
     return shortcut.cost <= cost_bound && shortcut.peak <= peak_bound;
