@@ -5,7 +5,8 @@ it first came within 0.1 m of the goal), the goal's yaw as drive_goals.py sends 
 from where the car set off: the previous goal, or --start for the first), the angle between them, and
 the seconds it spent below 0.2 m/s (speed averaged over 0.5 s) in the stretch that ends at the goal,
 and every other slow stretch of 0.3 s or more on the way (where, and how long: at the start, a
-turn in place; on the way, a bend taken slowly).
+turn in place; on the way, a bend taken slowly); and how far the car drove to the goal (two routes
+that cost about the same to a planner can differ by half a metre on the floor).
 A car that arrives far off the goal's yaw crawls and turns there (docs/ros.md, "Arriving lined up").
 
 Usage:
@@ -32,18 +33,19 @@ def angle_between(a, b):
 
 def approaches(trace, goals, start):
     """Rows (goal, arrival heading deg, goal yaw deg, off deg, slow s at the goal, [(s, x, y) of the
-    slow stretches before it]) for one trace."""
+    slow stretches before it], metres driven) for one trace."""
     data = np.genfromtxt(trace, delimiter=",", names=True)
     t, x, y = data["t"], data["x"], data["y"]
     dt = np.diff(t)
-    speed = np.hypot(np.diff(x), np.diff(y)) / np.maximum(dt, 1e-6)
+    step = np.hypot(np.diff(x), np.diff(y))
+    speed = step / np.maximum(dt, 1e-6)
     window = max(1, int(round(0.5 / max(float(np.median(dt)), 1e-3))))
     slow = np.convolve(speed, np.ones(window) / window, mode="same") < 0.2
     rows, begin, previous = [], 0, start
     for gx, gy in goals:
         near = np.nonzero(np.hypot(x[begin:] - gx, y[begin:] - gy) < 0.1)[0]
         if len(near) == 0:
-            rows.append(((gx, gy), None, None, None, None, []))
+            rows.append(((gx, gy), None, None, None, None, [], None))
             break
         i = begin + int(near[0])
         j = int(np.searchsorted(t, t[i] - 1.0))
@@ -63,7 +65,8 @@ def approaches(trace, goals, start):
                 m = n
             else:
                 m += 1
-        rows.append(((gx, gy), heading, goal_yaw, angle_between(heading, goal_yaw), float(dt[k + 1:i].sum()), stretches))
+        rows.append(((gx, gy), heading, goal_yaw, angle_between(heading, goal_yaw), float(dt[k + 1:i].sum()), stretches,
+                     float(step[begin:i].sum())))
         begin, previous = i, (gx, gy)
     return rows
 
@@ -76,17 +79,17 @@ def main():
     args = parser.parse_args()
     goals = points(args.goals) if args.goals else LAB_GOALS
     start = points(args.start)[0] if args.start else LAB_START
-    print("| trace | goal | arrived heading | goal yaw | off | slow at the goal | slow on the way |")
-    print("|---|---|---:|---:|---:|---:|---|")
+    print("| trace | goal | driven | arrived heading | goal yaw | off | slow at the goal | slow on the way |")
+    print("|---|---|---:|---:|---:|---:|---:|---|")
     for trace in args.traces:
-        for goal, heading, yaw, off, slow, stretches in approaches(trace, goals, start):
+        for goal, heading, yaw, off, slow, stretches, driven in approaches(trace, goals, start):
             label = os.path.splitext(os.path.basename(trace))[0]
             if heading is None:
-                print("| %s | (%.2f, %.2f) | not reached | | | | |" % (label, goal[0], goal[1]))
+                print("| %s | (%.2f, %.2f) | not reached | | | | | |" % (label, goal[0], goal[1]))
             else:
                 way = "; ".join("%.1f s at (%.2f, %.2f)" % s for s in stretches)
-                print("| %s | (%.2f, %.2f) | %.0f° | %.0f° | %.0f° | %.1f s | %s |" % (label, goal[0], goal[1], heading,
-                                                                                  yaw, off, slow, way))
+                print("| %s | (%.2f, %.2f) | %.2f m | %.0f° | %.0f° | %.0f° | %.1f s | %s |" % (
+                    label, goal[0], goal[1], driven, heading, yaw, off, slow, way))
 
 
 if __name__ == "__main__":
