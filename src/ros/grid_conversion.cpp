@@ -84,7 +84,8 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
 }
 
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
-                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation) {
+                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation,
+                      const std::optional<Eigen::Vector2d>& past_goal) {
   nav_msgs::Path path;
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
@@ -101,8 +102,11 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, cons
   }
   points.front() = {start.pose.position.x, start.pose.position.y};
   if (points.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
-  const std::vector<double> headings =
+  const bool runs_past = past_goal && points.size() > 1;
+  if (runs_past) points.insert(points.end() - 1, *past_goal);
+  std::vector<double> headings =
       eaci::orientPoints(points, tf2::getYaw(start.pose.orientation), tf2::getYaw(goal.pose.orientation), orientation);
+  if (runs_past) headings[points.size() - 2] = headings[points.size() - 3];  // on along the route, not back
   for (std::size_t k = 0; k < points.size(); ++k) {
     geometry_msgs::PoseStamped pose;
     pose.header = path.header;

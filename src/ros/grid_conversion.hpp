@@ -52,10 +52,12 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
 // The route as poses in the map frame: the start pose's position first, cell centres (with
 // extra poses along long straight segments of a smoothed route), the goal pose (position and
 // orientation) last; headings as global_planner's orientation_mode sets them (default
-// forward: each pose faces the next one).
+// forward: each pose faces the next one). With `past_goal` (run_past_goal) a pose there comes
+// just before the goal's, facing the way the route arrives.
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp,
-                      eaci::OrientationMode orientation = eaci::OrientationMode::kForward);
+                      eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
+                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt);
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);

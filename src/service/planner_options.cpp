@@ -32,6 +32,7 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"landmarks", fieldAccess<Options>("landmarks", &Options::landmarks)},
       {"route_hysteresis", fieldAccess<Options>("route_hysteresis", &Options::route_hysteresis)},
       {"price_goal_heading", fieldAccess<Options>("price_goal_heading", &Options::price_goal_heading)},
+      {"run_past_goal", fieldAccess<Options>("run_past_goal", &Options::run_past_goal)},
       {"orientation_mode",
        {[](Options& o, const std::string& v) {
           try {
@@ -128,6 +129,9 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
   else if (!std::isfinite(options.route_hysteresis) || options.route_hysteresis < 0 || options.route_hysteresis > 1)
     e << "route_hysteresis must be in [0, 1], the fraction by which a replan's route must be cheaper than the "
          "route sent last to replace it, 0 = off (got " << options.route_hysteresis << ")";
+  else if (!std::isfinite(options.run_past_goal) || options.run_past_goal < 0 || options.run_past_goal > 0.5)
+    e << "run_past_goal must be in [0, 0.5] m, how far the plan runs on past the goal before it ends there, "
+         "0 = off (got " << options.run_past_goal << ")";
   return e.str();
 }
 

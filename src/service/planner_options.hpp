@@ -43,6 +43,11 @@ struct RosPlannerOptions {
   // heading kept the route going straight on past a bend it should have started to take
   // (docs/ros.md, "Arriving lined up"). false: the goal turns nothing.
   bool price_goal_heading = true;
+  // m: the plan runs this far on past the goal along the way it arrives, then ends at the goal
+  // pose (src/service/past_goal.hpp): dwa_local_planner keeps the car's speed until it is
+  // within xy_goal_tolerance of the goal instead of crawling the last decimetres. Only through
+  // cells the route could enter; 0 = the plan ends at the goal. In [0, 0.5].
+  double run_past_goal = 0.0;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base

@@ -13,6 +13,7 @@
 #include "eaci/path/route_hysteresis.hpp"
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
+#include "past_goal.hpp"
 #include "route_defect.hpp"
 #include "start_cell.hpp"
 
@@ -433,6 +434,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config, plan_options.end_headings);
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
+  reply.past_goal = pointPastGoal(view, frame, reply.result.smoothed_path, reply.goal, options.run_past_goal);
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
                              std::to_string(reply.result.iterations_run) + " iterations: returning " +

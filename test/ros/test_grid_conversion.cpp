@@ -92,6 +92,28 @@ TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
   EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.5, 1e-9);
 }
 
+// run_past_goal: a pose at the point past the goal comes just before the goal's, facing on
+// the way the route arrived (not back at the goal); the goal pose stays last.
+TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {
+  ros::Time::init();
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  geometry_msgs::PoseStamped start, goal;
+  start.pose.position.x = -0.75;
+  start.pose.position.y = 2.25;  // centre of (2,0)
+  goal.pose.position.x = 0.75;
+  goal.pose.position.y = 2.25;   // centre of (2,3)
+  goal.pose.orientation.w = 1.0;
+  const eaci::CellPath cells{{2, 0}, {2, 3}};  // one segment east
+  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,
+                                     Eigen::Vector2d{0.82, 2.25});
+  ASSERT_EQ(path.poses.size(), 5u);  // start, the centres of (2,1) and (2,2), past the goal, the goal
+  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.x, 0.82);
+  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.y, 2.25);
+  EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.0, 1e-9);  // east, as it arrived
+  EXPECT_DOUBLE_EQ(path.poses[4].pose.position.x, 0.75);
+  EXPECT_DOUBLE_EQ(path.poses[4].pose.position.y, 2.25);
+}
+
 TEST(GridConversion, InflationGrowsObstaclesByTheRadius) {
   auto grid = sampleGrid();
   eaci_ros::inflateObstacles(grid, 0.5, 65);  // one cell

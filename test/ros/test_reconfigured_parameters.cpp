@@ -36,7 +36,8 @@ TEST(ReconfigureConfig, HoldsEveryTableParameterButCornerCuttingAndTheRunTimeRos
   for (const std::string& name : eaci::parameterNames())
     if (name != "allow_corner_cutting") expected.insert(name);  // never on a robot
   for (const char* option : {"algorithm", "default_tolerance", "max_planning_time", "publish_plan",
-                             "visualize_pheromone", "orientation_mode", "route_hysteresis", "price_goal_heading"})
+                             "visualize_pheromone", "orientation_mode", "route_hysteresis", "price_goal_heading",
+                             "run_past_goal"})
     expected.insert(option);
   EXPECT_EQ(configNames(), expected);
 }

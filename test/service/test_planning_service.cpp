@@ -307,6 +307,46 @@ CostmapSnapshot blockWithDearSide(bool dear_above) {
   return costmap;
 }
 
+// run_past_goal: the path runs on past the goal the way the route arrives, by that many metres
+// (on a 0.1 m grid: east into a goal reached along a row, north-east into one reached along
+// the diagonal), and not at all into an obstacle, the inscribed band or unknown space, nor
+// when it is 0.
+TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
+  const auto planned = [](CostmapSnapshot costmap, eaci::Cell from, eaci::Cell to, double past) {
+    Log log;
+    PlanningService service(settings(), log.logger());
+    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+    config.options.run_past_goal = past;
+    configure(service, config);
+    PlanRequest r;
+    r.start = {(from.col + 0.5) * 0.1, (costmap.frame.height - from.row - 0.5) * 0.1};
+    r.goal = {(to.col + 0.5) * 0.1, (costmap.frame.height - to.row - 0.5) * 0.1};
+    const PlanReply reply = service.plan(costmap, r);
+    EXPECT_TRUE(reply.ok()) << reply.error;
+    EXPECT_NEAR((reply.goal - r.goal).norm(), 0.0, 1e-9);
+    return reply;
+  };
+  CostmapSnapshot open = openCostmap(30, 12);
+  open.frame.resolution = 0.1;
+  const Eigen::Vector2d goal_east{2.05, 0.75};  // cell (4, 20): x = 20.5 x 0.1, y = (12 - 4 - 0.5) x 0.1
+  const PlanReply east = planned(open, {4, 2}, {4, 20}, 0.15);
+  ASSERT_TRUE(east.past_goal.has_value());
+  EXPECT_NEAR(east.past_goal->x(), goal_east.x() + 0.15, 1e-9);
+  EXPECT_NEAR(east.past_goal->y(), goal_east.y(), 1e-9);
+  const PlanReply diagonal = planned(open, {10, 2}, {2, 10}, 0.15);  // 8 cells up and 8 across
+  ASSERT_TRUE(diagonal.past_goal.has_value());
+  EXPECT_NEAR(diagonal.past_goal->x(), 1.05 + 0.15 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(diagonal.past_goal->y(), 0.95 + 0.15 / std::sqrt(2.0), 1e-9);
+  EXPECT_FALSE(planned(open, {4, 2}, {4, 20}, 0.0).past_goal.has_value());
+
+  for (const std::uint8_t beyond : {kCostmapLethal, kCostmapInscribed, kCostmapUnknown}) {
+    CostmapSnapshot walled = open;
+    for (int row = 0; row < 12; ++row) at(walled, row, 21) = beyond;  // the cells just east of the goal
+    const PlanReply reply = planned(walled, {4, 2}, {4, 20}, 0.15);
+    EXPECT_FALSE(reply.past_goal.has_value()) << int{beyond};
+  }
+}
+
 bool routeGoesAbove(const eaci::CellPath& corners) {
   for (const eaci::Cell& c : corners)
     if (c.row > 10) return false;
@@ -454,7 +494,8 @@ TEST(PlannerOptions, EveryBadValueIsNamed) {
       {"max_planning_time", "-0.5"}, {"max_planning_time", "nan"}, {"default_tolerance", "-1"},
       {"landmarks", "65"},    {"landmarks", "-1"},     {"occupied_threshold", "0"}, {"algorithm", "dijkstra"},
       {"orientation_mode", "9"}, {"ants", "many"},     {"route_hysteresis", "-0.1"}, {"route_hysteresis", "nan"},
-      {"route_hysteresis", "1.5"}, {"no_such_parameter", "1"}};
+      {"route_hysteresis", "1.5"}, {"run_past_goal", "-0.05"}, {"run_past_goal", "nan"}, {"run_past_goal", "0.6"},
+      {"no_such_parameter", "1"}};
   for (const auto& [name, text] : bad) {
     eaci::Parameters params = rosDefaultParameters();
     RosPlannerOptions options;
