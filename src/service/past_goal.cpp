@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "eaci/path/smoothing.hpp"
+
 namespace eaci_service {
 
 std::optional<Eigen::Vector2d> pointPastGoal(const eaci::GridView& view, const eaci::MapFrame& frame,
@@ -9,17 +11,21 @@ std::optional<Eigen::Vector2d> pointPastGoal(const eaci::GridView& view, const e
                                              double distance) {
   if (!(distance > 0) || !std::isfinite(distance) || route.size() < 2) return std::nullopt;
   std::optional<Eigen::Vector2d> from;  // the route's last cell at least two cells before the goal
-  for (std::size_t k = route.size() - 1; k-- > 0 && !from;)
-    if ((goal - frame.cellToWorld(route[k])).norm() >= 2.0 * frame.resolution) from = frame.cellToWorld(route[k]);
-  if (!from) return std::nullopt;
-  const Eigen::Vector2d direction = (goal - *from).normalized();
-  const Eigen::Vector2d past = goal + distance * direction;
-  const int samples = static_cast<int>(std::ceil(2.0 * distance / frame.resolution));  // every half cell
-  for (int s = 1; s <= samples; ++s) {
-    const std::optional<eaci::Cell> cell = frame.worldToCell(goal + (distance * s / samples) * direction);
-    if (!cell || !view.isFree(*cell) || view.value(*cell) == view.interpretation().unknown_value) return std::nullopt;
+  for (std::size_t k = route.size() - 1; k-- > 0 && !from;) {
+    const Eigen::Vector2d corner = frame.cellToWorld(route[k]);
+    if ((goal - corner).norm() >= 2.0 * frame.resolution) from = corner;
   }
-  return past;
+  if (!from) return std::nullopt;
+  const Eigen::Vector2d past = goal + distance * (goal - *from).normalized();
+  const std::optional<eaci::Cell> past_cell = frame.worldToCell(past);
+  if (!past_cell) return std::nullopt;
+  // Every cell the way there passes or touches: on the map, no obstacle, not unknown.
+  bool clear = true;
+  eaci::traverseSegment(route.back(), *past_cell, [&](eaci::Cell c, double) {
+    clear = view.isFree(c) && view.value(c) != view.interpretation().unknown_value;
+    return clear;
+  });
+  return clear ? std::optional<Eigen::Vector2d>(past) : std::nullopt;
 }
 
 }  // namespace eaci_service

@@ -21,9 +21,9 @@ namespace eaci_service {
 
 // The point `distance` metres on past `goal` (world) along the way `route` (its cells, the last
 // one the goal's) arrives: from its last cell at least two cells before the goal to the goal.
-// Nothing when distance is not positive, the route is shorter than that, or a cell between the
-// goal and the point is off the map, an obstacle or unknown in `view` (the path never leads
-// into what the route may not enter).
+// Nothing when distance is not positive, the route is shorter than that, or a cell on the way
+// from the goal's cell to the point's (eaci::traverseSegment: every cell the line between their
+// centres passes or touches) is off the map, an obstacle or unknown in `view`.
 std::optional<Eigen::Vector2d> pointPastGoal(const eaci::GridView& view, const eaci::MapFrame& frame,
                                              const eaci::CellPath& route, const Eigen::Vector2d& goal,
                                              double distance);
