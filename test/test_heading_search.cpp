@@ -527,3 +527,82 @@ TEST(HeadingSearch, PlanStopsInsideTheSearch) {
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(calls, 2);
 }
+
+// --- turn_cost_unit route_cell (planner/turn_cost_unit.hpp) ------------------------------------
+
+// By hand on a corridor: free, three cells of cost 50, free. A move into a cell of cost 50 costs
+// (50 + 3 x 50) / 50 = 4, into a free one 1: the cheapest route costs 4 + 4 + 4 + 1 = 13 over 4
+// cells, its average cell 13 / 4, and a radian is priced at turn_cost x 13 / 4.
+TEST(TurnCostUnit, RouteCellPricesARadianAtTheCheapestRoutesAverageCell) {
+  TestMap m;
+  m.rows = 1;
+  m.cols = 5;
+  m.cost = {0, 50, 50, 50, 0};
+  const CostGrid grid = m.grid();
+  eaci::Parameters params;
+  params.turn_cost = 2.0;
+  for (const eaci::Algorithm algorithm : {eaci::Algorithm::kAStar, eaci::Algorithm::kEaci}) {
+    params.turn_cost_unit = eaci::TurnCostUnit::kFreeCell;
+    const eaci::PlanResult as_it_is = eaci::plan(grid, Cell{0, 0}, Cell{0, 4}, algorithm, params);
+    ASSERT_TRUE(as_it_is.success()) << as_it_is.error;
+    EXPECT_EQ(as_it_is.turn_price, 2.0);
+    params.turn_cost_unit = eaci::TurnCostUnit::kRouteCell;
+    const eaci::PlanResult in_route_cells = eaci::plan(grid, Cell{0, 0}, Cell{0, 4}, algorithm, params);
+    ASSERT_TRUE(in_route_cells.success()) << in_route_cells.error;
+    EXPECT_NEAR(in_route_cells.turn_price, 2.0 * 13.0 / 4.0, 1e-12);
+    EXPECT_NEAR(in_route_cells.combined_cost, 13.0, 1e-12);  // straight on: no turn to price
+  }
+  // Start = goal: nothing to measure, nothing to turn.
+  EXPECT_EQ(eaci::plan(grid, Cell{0, 2}, Cell{0, 2}, eaci::Algorithm::kAStar, params).combined_cost, 0.0);
+  EXPECT_EQ(eaci::routeCellCost(13.0, 4.0), 13.0 / 4.0);
+  EXPECT_EQ(eaci::routeCellCost(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()), 1.0);
+  EXPECT_EQ(eaci::routeCellCost(0.0, 0.0), 1.0);
+}
+
+// A map whose free cells all cost 50 prices every move at 4 x its length, so every route's
+// average cell costs 4 and route_cell prices a radian at 4 x turn_cost: the whole objective is
+// 4 x the one of the same map with free cells, and so is its optimum (brute force on both).
+// In free cells the same turn_cost weighs 4 x less against the moves: the brute force at t.
+TEST(TurnCostUnit, OnAUniformlyCostlyMapRouteCellPlansAsOnTheFreeMap) {
+  int planned = 0;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+    const TestMap free_map = randomMap(seed, 5, 6, 0.25, false);
+    TestMap costly = free_map;
+    for (int& c : costly.cost)
+      if (c >= 0) c = 50;
+    const Cell start{0, 0}, goal{4, 5};
+    const double t = 0.5 + 0.5 * static_cast<double>(seed % 4);
+    const double free_optimum = bruteForce(free_map, start, goal, t);
+    eaci::Parameters params;
+    params.turn_cost = t;
+    params.turn_cost_unit = eaci::TurnCostUnit::kRouteCell;
+    const eaci::PlanResult r = eaci::plan(costly.grid(), start, goal, eaci::Algorithm::kAStar, params);
+    if (!std::isfinite(free_optimum)) {
+      EXPECT_EQ(r.status, eaci::PlanStatus::kNoPath) << "seed " << seed;
+      continue;
+    }
+    ++planned;
+    ASSERT_TRUE(r.success()) << "seed " << seed << ": " << r.error;
+    EXPECT_NEAR(r.turn_price, 4.0 * t, 1e-12) << "seed " << seed;
+    EXPECT_NEAR(r.combined_cost, 4.0 * free_optimum, 1e-9) << "seed " << seed;
+    EXPECT_NEAR(testCombinedCost(costly, r.path, 4.0 * t), r.combined_cost, 1e-9) << "seed " << seed;
+    params.turn_cost_unit = eaci::TurnCostUnit::kFreeCell;
+    const eaci::PlanResult as_it_is = eaci::plan(costly.grid(), start, goal, eaci::Algorithm::kAStar, params);
+    EXPECT_NEAR(as_it_is.combined_cost, bruteForce(costly, start, goal, t), 1e-9) << "seed " << seed;
+  }
+  EXPECT_GE(planned, 8);
+}
+
+TEST(TurnCostUnit, APlanStopsInsideTheMeasuringSearch) {
+  const CostGrid grid = walledInGoal(200);  // A* would take every cell off its open list
+  eaci::Parameters params;
+  params.turn_cost = 0.5;
+  params.turn_cost_unit = eaci::TurnCostUnit::kRouteCell;
+  eaci::PlanOptions options;
+  int calls = 0;
+  options.should_stop = [&calls](int) { return ++calls >= 2; };
+  const eaci::PlanResult r = eaci::plan(grid, Cell{0, 0}, Cell{199, 199}, eaci::Algorithm::kAStar, params, options);
+  EXPECT_EQ(r.status, eaci::PlanStatus::kStopped);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_NE(r.error.find("route_cell"), std::string::npos) << r.error;
+}

@@ -26,6 +26,7 @@ TEST(Parameters, DefaultsAreThePapers) {
   EXPECT_EQ(p.lethal_cost, 253);
   EXPECT_FALSE(p.allow_unknown);
   EXPECT_EQ(p.turn_cost, 0.0);  // no price on turning: routes as before issue #30
+  EXPECT_EQ(p.turn_cost_unit, eaci::TurnCostUnit::kFreeCell);  // turn_cost as it is
   EXPECT_EQ(eaci::validationError(p), "");
 }
 
@@ -103,11 +104,13 @@ TEST(Parameters, SetByName) {
   EXPECT_DOUBLE_EQ(p.stop_gap, 0.01);
   eaci::setParameter(p, "turn_cost", "0.5");
   EXPECT_EQ(p.turn_cost, 0.5);
+  eaci::setParameter(p, "turn_cost_unit", "route_cell");
+  EXPECT_EQ(p.turn_cost_unit, eaci::TurnCostUnit::kRouteCell);
   eaci::setParameter(p, "smooth_tolerance", "0.2");
   EXPECT_EQ(p.smooth_tolerance, 0.2);
   eaci::setParameter(p, "round_corners", "2");
   EXPECT_EQ(p.round_corners, 2);
-  EXPECT_EQ(eaci::parameterNames().size(), 39u);  // 24, turn_cost, smooth_tolerance, round_corners and MAACO's 12
+  EXPECT_EQ(eaci::parameterNames().size(), 40u);  // 24, turn_cost(_unit), smooth_tolerance, round_corners and MAACO's 12
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {
@@ -119,6 +122,12 @@ TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {
   EXPECT_THROW(eaci::setParameter(p, "alpha", "1.1x"), eaci::ParameterError);
   EXPECT_THROW(eaci::setParameter(p, "allow_corner_cutting", "maybe"), eaci::ParameterError);
   EXPECT_THROW(eaci::setParameter(p, "island_strategy", "random"), eaci::ParameterError);
+  try {
+    eaci::setParameter(p, "turn_cost_unit", "metre");
+    ADD_FAILURE() << "turn_cost_unit metre was taken";
+  } catch (const eaci::ParameterError& e) {
+    EXPECT_STREQ(e.what(), "turn_cost_unit: 'metre' is not one of: free_cell, route_cell");
+  }
   EXPECT_THROW(eaci::setParameter(p, "seed", "-1"), eaci::ParameterError);
   // Parsed but out of range: validation's job.
   eaci::setParameter(p, "alpha", "nan");

@@ -142,6 +142,9 @@ struct PlanResult {
   // (combinedRouteCost with PlanOptions::end_headings): the objective A* minimises when
   // turn_cost > 0; the same as `cost` when turn_cost is 0.
   double combined_cost = std::numeric_limits<double>::infinity();
+  // The price of a radian of turning the plan used: turn_cost, or with turn_cost_unit
+  // route_cell turn_cost x the cheapest route's average cell cost (planner/turn_cost_unit.hpp).
+  double turn_price = 0.0;
   double total_turn_deg = 0.0;
   int iterations_to_converge = 0;  // iteration that first reached the final cost (0 for A*)
   int iterations_run = 0;
@@ -216,13 +219,45 @@ inline void fillFromColony(const CostGrid& grid, const ColonyResult& colony, con
 
 }  // namespace detail
 
+inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
+                       const PlanOptions& options = {});
+
+namespace detail {
+// turn_cost_unit route_cell: the plan with turns priced at turn_cost x the cost of the average
+// cell of the cheapest route from start to goal (A*, turns not priced), that is the plan of
+// that price in free cells.
+inline PlanResult planInRouteCells(const CostGrid& grid, Cell start, Cell goal, Algorithm algorithm,
+                                   const Parameters& params, const PlanOptions& options) {
+  const auto search_start = std::chrono::steady_clock::now();
+  StopPoll poll(options.should_stop, 0);
+  GridSearchWorkspace own_workspace;
+  GridSearchWorkspace& workspace = options.workspace ? options.workspace->astar : own_workspace;
+  const CheapestPath cheapest = cheapestPath(grid, start, goal, workspace, &poll);
+  if (cheapest.stopped) {
+    PlanResult stopped = failure(algorithm, PlanStatus::kStopped,
+                                 "stopped (should_stop) while measuring the cheapest route's cells (turn_cost_unit route_cell)");
+    stopped.interrupted = true;
+    return stopped;
+  }
+  const double measured_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - search_start).count();
+  Parameters priced = params;
+  priced.turn_cost = params.turn_cost * routeCellCost(cheapest.cost, cheapest.length);
+  priced.turn_cost_unit = TurnCostUnit::kFreeCell;
+  if (priced.turn_cost > 1e6) priced.turn_cost = 1e6;  // validate()'s bound
+  PlanResult r = plan(grid, start, goal, algorithm, priced, options);
+  r.times.search += measured_ms;
+  return r;
+}
+}  // namespace detail
+
 // The move cost rule the parameters ask for.
 inline CostRule costRule(const Parameters& params) { return CostRule{params.neutral_cost, params.cost_factor}; }
 
 // Plans on `grid` with the move costs of `params` (neutral_cost, cost_factor), whatever rule
 // the grid was built with.
 inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm algorithm, const Parameters& params,
-                       const PlanOptions& options = {}) {
+                       const PlanOptions& options) {
   using detail::failure;
   const std::string parameter_error = validationError(params);
   if (!parameter_error.empty())
@@ -259,8 +294,12 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     return failure(algorithm, PlanStatus::kInvalidMap, e.str());
   }
 
+  if (params.turn_cost > 0 && params.turn_cost_unit == TurnCostUnit::kRouteCell && !(start == goal))
+    return detail::planInRouteCells(grid, start, goal, algorithm, params, options);
+
   PlanResult r;
   r.algorithm = algorithm;
+  r.turn_price = params.turn_cost;
   if (start == goal) {  // nothing to search: the route is the start cell itself
     r.status = PlanStatus::kSuccess;
     r.path = {start};

@@ -454,8 +454,8 @@ void PlanningService::keepSentRouteIfClose(PlanReply& reply, const eaci::CostGri
     const eaci::CellPath kept = eaci::rejoinRoute(sent_route_->corners, start, kRejoinDistance / frame.resolution);
     if (!kept.empty() &&
         drivableRouteDefect(view, kept, start, target, config.params.allow_corner_cutting).empty()) {
-      const double kept_cost = eaci::polylineObjective(grid, kept, config.params.turn_cost, ends);
-      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, config.params.turn_cost, ends);
+      const double kept_cost = eaci::polylineObjective(grid, kept, reply.result.turn_price, ends);
+      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, reply.result.turn_price, ends);
       if (kept_cost <= new_cost * (1.0 + hysteresis)) {
         reply.result.smoothed_path = kept;
         reply.result.smoothed_length = eaci::pathLength(kept);

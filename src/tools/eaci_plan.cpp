@@ -333,9 +333,11 @@ void printSummary(const Options& o, const eaci::PlanResult& r, const eaci::tools
     << " m, total turn " << formatNumber(r.total_turn_deg, 1) << " deg (" << r.path.size() << " cells, 8-connected)\n";
   if (context.parameters.turn_cost > 0) {
     const double end_turn_deg = eaci::endTurnRadians(r.path, context.end_headings) * 180.0 / M_PI;
-    s << "combined cost:  " << formatNumber(r.combined_cost) << " = cost " << formatNumber(r.cost) << " + turn_cost "
-      << formatNumber(context.parameters.turn_cost) << " x " << formatNumber(r.total_turn_deg + end_turn_deg, 1)
-      << " deg in radians";
+    s << "combined cost:  " << formatNumber(r.combined_cost) << " = cost " << formatNumber(r.cost) << " + turn price "
+      << formatNumber(r.turn_price) << " x " << formatNumber(r.total_turn_deg + end_turn_deg, 1) << " deg in radians";
+    if (context.parameters.turn_cost_unit == eaci::TurnCostUnit::kRouteCell)
+      s << " (turn_cost " << formatNumber(context.parameters.turn_cost) << " x the cheapest route's average cell, "
+        << formatNumber(r.turn_price / context.parameters.turn_cost) << ")";
     if (context.end_headings.hasStart() || context.end_headings.hasGoal())
       s << " (" << formatNumber(end_turn_deg, 1) << " of them onto the route and off it, --start-yaw/--goal-yaw)";
     s << "\n";

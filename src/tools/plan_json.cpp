@@ -48,6 +48,9 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // cost + turn_cost x the route's heading change in radians (the objective every planner minimises
   // when turn_cost > 0); equal to cost when turn_cost is 0.
   j["combined_cost"] = has_length && std::isfinite(r.combined_cost) ? json(r.combined_cost) : json(nullptr);
+  // The price of a radian the plan used: turn_cost, x the cheapest route's average cell cost with
+  // turn_cost_unit route_cell.
+  j["turn_price"] = r.turn_price;
   j["length_m"] = has_length && map ? json(r.length * map->resolution) : json(nullptr);
   // Clearance (route cell centre to nearest obstacle cell centre of the map, metres; null without
   // obstacles) and mean cell cost 0..254 of the route, on the grid it was planned on.

@@ -57,7 +57,7 @@ TEST(ReconfigureConfig, TheRangesAreTheValidationsRanges) {
   const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "aco_rho", "aco_tau0", "neutral_cost",
                                                 "maaco_q", "maaco_rho", "maaco_tau0"};
   const std::set<std::string> words = {"algorithm", "island_strategy", "maaco_candidates", "maaco_start_distance",
-                                       "maaco_bounds"};
+                                       "maaco_bounds", "turn_cost_unit"};
   for (const PlannerConfig* bound : {&PlannerConfig::__getMin__(), &PlannerConfig::__getMax__()}) {
     const bool at_min = bound == &PlannerConfig::__getMin__();
     for (const auto& [name, text] : eaci_ros::configTexts(*bound)) {
@@ -92,6 +92,7 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   config.aco_rho = 0.25;
   config.ants = 7;
   config.island_strategy = "paper";
+  config.turn_cost_unit = "route_cell";
   config.algorithm = "astar";
   config.default_tolerance = 0.3;
   config.publish_plan = false;
@@ -105,6 +106,7 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   EXPECT_EQ(params.aco_rho, 0.25);
   EXPECT_EQ(params.ants, 7);
   EXPECT_EQ(params.island_strategy, eaci::IslandStrategy::kPaper);
+  EXPECT_EQ(params.turn_cost_unit, eaci::TurnCostUnit::kRouteCell);
   EXPECT_EQ(params.kappa, 0.9);
   EXPECT_FALSE(params.allow_corner_cutting);
   EXPECT_EQ(options.algorithm, eaci::Algorithm::kAStar);

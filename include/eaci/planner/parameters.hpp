@@ -22,6 +22,7 @@
 #include "eaci/aco/colony_parameters.hpp"
 #include "eaci/grid/costmap_costs.hpp"
 #include "eaci/planner/parameter_text.hpp"
+#include "eaci/planner/turn_cost_unit.hpp"
 
 namespace eaci {
 
@@ -51,7 +52,10 @@ struct Parameters : ColonyParameters {
   // roundCorners), each cut by the smoother's rule with the corner it cuts off as the stretch
   // replaced (never much nearer the walls than the bend); each pass splits a corner's turn in two. 0 = off.
   int round_corners = 0;
-  // turn_cost, the price of turning, is the colonies' too: ColonyParameters.
+  // turn_cost, the price of turning, is the colonies' too: ColonyParameters. Its unit: a free
+  // cell, or the average cell of the cheapest route between start and goal
+  // (planner/turn_cost_unit.hpp; plan() prices turns at turn_cost x that cell's cost).
+  TurnCostUnit turn_cost_unit = TurnCostUnit::kFreeCell;
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.
@@ -217,6 +221,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
         [](const Parameters& p) { return ParameterValue{p.seed}; }}},
       {"threads", fieldAccess("threads", &Parameters::threads)},
       {"turn_cost", fieldAccess("turn_cost", &Parameters::turn_cost)},
+      {"turn_cost_unit", wordAccess("turn_cost_unit", &Parameters::turn_cost_unit,
+                                    {TurnCostUnit::kFreeCell, TurnCostUnit::kRouteCell})},
   };
   return table;
 }
