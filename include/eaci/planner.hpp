@@ -3,6 +3,7 @@
 // Checks every input and turns each problem into a status and a one-line reason.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <limits>
@@ -242,9 +243,9 @@ inline PlanResult planInRouteCells(const CostGrid& grid, Cell start, Cell goal, 
   const double measured_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - search_start).count();
   Parameters priced = params;
-  priced.turn_cost = params.turn_cost * routeCellCost(cheapest.cost, cheapest.length);
+  // At most validate()'s bound, which turn_cost x M passes only for turn_cost above 1e6 / M.
+  priced.turn_cost = std::min(1e6, params.turn_cost * routeCellCost(cheapest.cost, cheapest.length));
   priced.turn_cost_unit = TurnCostUnit::kFreeCell;
-  if (priced.turn_cost > 1e6) priced.turn_cost = 1e6;  // validate()'s bound
   PlanResult r = plan(grid, start, goal, algorithm, priced, options);
   r.times.search += measured_ms;
   return r;

@@ -9,6 +9,7 @@
 // price (PlanResult::turn_price) and is otherwise the plan of that turn_cost in free cells.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace eaci {
@@ -25,7 +26,7 @@ inline const char* toString(TurnCostUnit u) { return u == TurnCostUnit::kFreeCel
 // route to measure (a length of 0, or not finite).
 inline double routeCellCost(double cost, double length) {
   if (!(length > 0) || !std::isfinite(cost) || !std::isfinite(length)) return 1.0;
-  return cost / length < 1.0 ? 1.0 : cost / length;
+  return std::max(1.0, cost / length);
 }
 
 }  // namespace eaci
