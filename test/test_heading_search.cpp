@@ -216,25 +216,6 @@ CostGrid walledInGoal(int size) {
 
 // --- Hand-computed cases ---------------------------------------------------------------------
 
-TEST(TurnStepsAtLeast, TheAngleToTheGoalRoundedUpTo45Degrees) {
-  // Heading east (direction 0: row 0, col +1); offsets as (rows, cols), rows down.
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 0, 5), 0);    // straight on
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 0, 0), 0);    // there already
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, -1, 5), 1);   // a little north of east
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 5, 5), 1);    // exactly south-east: 45 degrees
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, -5, 1), 2);   // nearly north
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 5, 0), 2);    // south: 90 degrees
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, -5, -1), 3);  // north, a little west
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 4, -4), 3);   // exactly south-west: 135 degrees
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 1, -5), 4);   // nearly behind
-  EXPECT_EQ(eaci::turnStepsAtLeast(0, 0, -5), 4);   // behind
-  // Heading north-east (direction 1: row -1, col +1).
-  EXPECT_EQ(eaci::turnStepsAtLeast(1, -3, 3), 0);
-  EXPECT_EQ(eaci::turnStepsAtLeast(1, 0, 3), 1);    // east
-  EXPECT_EQ(eaci::turnStepsAtLeast(1, 1, 3), 2);    // a little south of east
-  EXPECT_EQ(eaci::turnStepsAtLeast(1, 3, -3), 4);   // south-west: behind
-}
-
 TEST(HeadingSearch, StraightCorridorHasNoTurn) {
   // A corridor running north to south: the first move turns nothing, whatever the heading
   // the search starts from, and the route goes straight: combined cost = length = 5.

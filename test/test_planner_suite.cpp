@@ -319,6 +319,68 @@ TEST(PlannerLimits, StopCheckDuringSetUpGivesTheSearchRouteWithGeodesicIslands) 
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{19, 19}), "");
 }
 
+// One ant, one iteration, no heuristic (beta 0): the ant wanders, and where it still arrives its
+// route is longer than the only cheapest one, the diagonal of the open 12 x 12 map, 11 sqrt 2.
+// never_worse_than_search then returns the diagonal its islands sit on instead.
+TEST(PlannerLimits, NeverWorseThanSearchReturnsTheSearchRouteInsteadOfALuckyAntsDetour) {
+  const CostGrid grid(12, 12, false);
+  const double diagonal = 11 * std::sqrt(2.0);
+  eaci::Parameters p;
+  p.ants = 1;
+  p.max_iterations = 1;
+  p.beta = 0.0;
+  eaci::PlanOptions guarded;
+  guarded.never_worse_than_search = true;
+  int detours = 0;
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    p.seed = seed;
+    const auto walked = eaci::plan(grid, Cell{0, 0}, Cell{11, 11}, Algorithm::kEaci, p);
+    const auto kept = eaci::plan(grid, Cell{0, 0}, Cell{11, 11}, Algorithm::kEaci, p, guarded);
+    ASSERT_TRUE(walked.success() && kept.success()) << walked.error << kept.error;
+    EXPECT_NEAR(kept.cost, diagonal, 1e-9) << "seed " << seed;
+    EXPECT_EQ(eaci::test::routeDefect(grid, kept.path, Cell{0, 0}, Cell{11, 11}), "");
+    if (walked.cost > diagonal + 1e-9) {
+      ++detours;
+      EXPECT_TRUE(kept.route_from_search) << "seed " << seed;
+      EXPECT_DOUBLE_EQ(kept.colony_combined_cost, walked.combined_cost) << "seed " << seed;
+    } else {  // the ant took the diagonal, or was lost (then the search's route anyway)
+      EXPECT_EQ(kept.path, walked.path) << "seed " << seed;
+      EXPECT_FALSE(std::isfinite(kept.colony_combined_cost)) << "seed " << seed;
+    }
+  }
+  EXPECT_GT(detours, 0);  // the case the option is for came up
+}
+
+// The guard compares the objective the colony answers to, cost + turn_cost x turning. A cell of
+// cost 20 in the middle of a 3 x 11 corridor: through it 10 + 3 x 20 / 50 = 11.2 with no turn;
+// round it 8 + 2 sqrt 2 = 10.83 with 180 deg (45 + 90 + 45) or, along the edge row, 90 deg. At
+// turn_cost 1 the straight way is the optimum (11.2 against 10.83 + pi and 10.83 + pi / 2), and
+// with turn_cost > 0 the islands sit on that optimum (the exact heading search). One wandering
+// ant (as above) arrives with routes that can cost less than 11.2 and turn more: they are
+// replaced too.
+TEST(PlannerLimits, NeverWorseThanSearchWeighsTheTurnsToo) {
+  CostGrid grid(11, 3, false);
+  grid.setCost(Cell{1, 5}, 20);
+  eaci::Parameters p;
+  p.turn_cost = 1.0;
+  p.ants = 1;
+  p.max_iterations = 1;
+  p.beta = 0.0;
+  eaci::PlanOptions guarded;
+  guarded.never_worse_than_search = true;
+  int cheaper_but_turning = 0;
+  for (unsigned seed = 1; seed <= 30; ++seed) {
+    p.seed = seed;
+    const auto walked = eaci::plan(grid, Cell{1, 0}, Cell{1, 10}, Algorithm::kEaci, p);
+    const auto kept = eaci::plan(grid, Cell{1, 0}, Cell{1, 10}, Algorithm::kEaci, p, guarded);
+    ASSERT_TRUE(walked.success() && kept.success()) << walked.error << kept.error;
+    EXPECT_NEAR(kept.combined_cost, 11.2, 1e-9) << "seed " << seed;
+    EXPECT_NEAR(kept.cost, 11.2, 1e-9) << "seed " << seed;
+    cheaper_but_turning += walked.cost < 11.2 - 1e-9;
+  }
+  EXPECT_GT(cheaper_but_turning, 0);  // a route a guard by cost alone would have kept came up
+}
+
 TEST(PlannerLimits, StopCheckDuringSetUpEndsWithoutARouteAndSaysSo) {
   // The paper's islands have no search route to fall back on: a stop check that is true from
   // the start ends the plan before any ant walks, even with the pheromone picture asked for.

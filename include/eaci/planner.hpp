@@ -118,6 +118,12 @@ struct PlanOptions {
   // turn_cost > 0 every algorithm prices the turn onto the first move and off the last one
   // like a corner (grid/end_headings.hpp). Default: none, the ends turn nothing.
   EndHeadings end_headings;
+  // Geodesic EACI: where the colony's best route scores worse (combined_cost) than the cheapest
+  // route its islands sit on (the A* route it searched first), return that route instead
+  // (PlanResult::route_from_search, colony_combined_cost). Off for the benchmarks, which
+  // measure the colony; the ROS planning service turns it on, so a robot never gets a route
+  // worse than the one the search already had.
+  bool never_worse_than_search = false;
 };
 
 // Where a plan's time went, in milliseconds (steady clock): for profiles (the planning
@@ -151,10 +157,14 @@ struct PlanResult {
   int iterations_run = 0;
   bool stopped_early = false;
   bool interrupted = false;
-  // Geodesic EACI ended without an ant reaching the goal (stopped by should_stop before one
-  // arrived, or every ant lost, as on long routes through mazes): `path` is the cheapest route
-  // (A*) its islands sit on, so a robot always gets a route when one exists.
+  // `path` is the cheapest route (A*) geodesic EACI's islands sit on: no ant reached the goal
+  // (stopped by should_stop before one arrived, or every ant lost, as on long routes through
+  // mazes), so a robot always gets a route when one exists; or, with
+  // PlanOptions::never_worse_than_search, the colony's best scored worse (colony_combined_cost).
   bool route_from_search = false;
+  // With never_worse_than_search: the combined cost of the colony's best route that the
+  // search's route replaced; +infinity when none was replaced.
+  double colony_combined_cost = std::numeric_limits<double>::infinity();
   long long lost_ants_total = 0;
   std::vector<int> ants_per_iteration;  // m, fewer where stop_gap ended an iteration after a wave of ants
   std::vector<int> lost_ants_per_iteration;
@@ -390,6 +400,14 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     if (r.path.empty() && !colony.search_route.empty()) {
       r.path = colony.search_route;
       r.route_from_search = true;
+    } else if (options.never_worse_than_search && !colony.search_route.empty()) {
+      // Both routes by the objective the colony answers to: cost + turn_cost x turning.
+      const double colony_score = combinedRouteCost(grid, r.path, params.turn_cost, options.end_headings);
+      if (combinedRouteCost(grid, colony.search_route, params.turn_cost, options.end_headings) < colony_score) {
+        r.colony_combined_cost = colony_score;
+        r.path = colony.search_route;
+        r.route_from_search = true;
+      }
     }
   }
   if (r.path.empty()) {

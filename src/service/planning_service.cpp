@@ -382,6 +382,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
+  plan_options.never_worse_than_search = true;  // a lucky ant's detour never reaches the robot
   if (options.price_goal_heading)  // grid angles are the costmap frame's yaws (y up the rows)
     plan_options.end_headings.goal = eaci::travelHeading(request.goal_yaw, options.orientation_mode);
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
@@ -435,11 +436,16 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   reply.past_goal = pointPastGoal(view, frame, reply.result.smoothed_path, reply.goal, options.run_past_goal);
+  const bool colony_replaced = std::isfinite(reply.result.colony_combined_cost);
+  if (colony_replaced)
+    say(LogLevel::kInfo, "the colony's best route scored " + eaci::formatNumber(reply.result.colony_combined_cost) +
+                             ", worse than the cheapest route the islands sit on: sending that route");
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
                              std::to_string(reply.result.iterations_run) + " iterations: returning " +
-                             (reply.result.route_from_search ? "the cheapest route the islands sit on (no ant had arrived yet)"
-                                                             : "the best route so far"));
+                             (!reply.result.route_from_search ? "the best route so far"
+                              : colony_replaced ? "the cheapest route the islands sit on (cheaper than the colony's best)"
+                                                : "the cheapest route the islands sit on (no ant had arrived yet)"));
   reply.outcome = PlanOutcome::kOk;
   return finish(reply);
 }

@@ -583,6 +583,30 @@ TEST(PlanningService, CancelStopsThePlanInProgressWithTheBestRouteSoFar) {
   EXPECT_LT(reply.result.iterations_run, 1000000);
 }
 
+// A lucky ant's detour never reaches the robot: the service plans with never_worse_than_search.
+// One ant, one iteration, no heuristic, on an open costmap: every plan is the diagonal, 9 sqrt 2
+// cells, though the ant alone wanders off it with some seeds.
+TEST(PlanningService, ALuckyAntsDetourIsNeverSent) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration();
+  config.params.ants = 1;
+  config.params.max_iterations = 1;
+  config.params.beta = 0.0;
+  const CostmapSnapshot costmap = openCostmap(12, 12);
+  int replaced = 0;
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    config.params.seed = seed;
+    configure(service, config);
+    const PlanReply reply = service.plan(costmap, request(costmap, {1, 1}, {10, 10}));
+    ASSERT_EQ(reply.outcome, PlanOutcome::kOk) << reply.error;
+    EXPECT_NEAR(reply.result.cost, octile(9, 9), 1e-9) << "seed " << seed;
+    replaced += std::isfinite(reply.result.colony_combined_cost);
+  }
+  EXPECT_GT(replaced, 0);  // some ant did wander
+  EXPECT_EQ(log.count("worse than the cheapest route the islands sit on: sending that route"), replaced);
+}
+
 // A plan stopped before its first iteration (here: shutting down from the start): geodesic
 // EACI answers with the cheapest route its islands sit on, the paper's islands with no route
 // and the reason.
