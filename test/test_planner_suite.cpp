@@ -322,15 +322,27 @@ TEST(PlannerLimits, StopCheckDuringSetUpGivesTheSearchRouteWithGeodesicIslands) 
 // One ant, one iteration, no heuristic (beta 0): the ant wanders, and where it still arrives its
 // route is longer than the only cheapest one, the diagonal of the open 12 x 12 map, 11 sqrt 2.
 // never_worse_than_search then returns the diagonal its islands sit on instead.
-TEST(PlannerLimits, NeverWorseThanSearchReturnsTheSearchRouteInsteadOfALuckyAntsDetour) {
-  const CostGrid grid(12, 12, false);
-  const double diagonal = 11 * std::sqrt(2.0);
+namespace {
+// One ant, one iteration, no heuristic (beta 0): an ant that wanders.
+eaci::Parameters oneWanderingAnt() {
   eaci::Parameters p;
   p.ants = 1;
   p.max_iterations = 1;
   p.beta = 0.0;
-  eaci::PlanOptions guarded;
-  guarded.never_worse_than_search = true;
+  return p;
+}
+eaci::PlanOptions neverWorseThanSearch() {
+  eaci::PlanOptions options;
+  options.never_worse_than_search = true;
+  return options;
+}
+}  // namespace
+
+TEST(PlannerLimits, NeverWorseThanSearchReturnsTheSearchRouteInsteadOfALuckyAntsDetour) {
+  const CostGrid grid(12, 12, false);
+  const double diagonal = 11 * std::sqrt(2.0);
+  eaci::Parameters p = oneWanderingAnt();
+  const eaci::PlanOptions guarded = neverWorseThanSearch();
   int detours = 0;
   for (unsigned seed = 1; seed <= 10; ++seed) {
     p.seed = seed;
@@ -361,13 +373,9 @@ TEST(PlannerLimits, NeverWorseThanSearchReturnsTheSearchRouteInsteadOfALuckyAnts
 TEST(PlannerLimits, NeverWorseThanSearchWeighsTheTurnsToo) {
   CostGrid grid(11, 3, false);
   grid.setCost(Cell{1, 5}, 20);
-  eaci::Parameters p;
+  eaci::Parameters p = oneWanderingAnt();
   p.turn_cost = 1.0;
-  p.ants = 1;
-  p.max_iterations = 1;
-  p.beta = 0.0;
-  eaci::PlanOptions guarded;
-  guarded.never_worse_than_search = true;
+  const eaci::PlanOptions guarded = neverWorseThanSearch();
   int cheaper_but_turning = 0;
   for (unsigned seed = 1; seed <= 30; ++seed) {
     p.seed = seed;
