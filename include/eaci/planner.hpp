@@ -119,7 +119,8 @@ struct PlanOptions {
   // like a corner (grid/end_headings.hpp). Default: none, the ends turn nothing.
   EndHeadings end_headings;
   // Geodesic EACI: where the colony's best route scores worse (combined_cost) than the cheapest
-  // route its islands sit on (the A* route it searched first), return that route instead
+  // route its islands sit on (its search's: A*'s, or with turn_cost > 0 the heading search's
+  // optimum of cost + turn price), return that route instead
   // (PlanResult::route_from_search, colony_combined_cost). Off for the benchmarks, which
   // measure the colony; the ROS planning service turns it on, so a robot never gets a route
   // worse than the one the search already had.
@@ -157,9 +158,9 @@ struct PlanResult {
   int iterations_run = 0;
   bool stopped_early = false;
   bool interrupted = false;
-  // `path` is the cheapest route (A*) geodesic EACI's islands sit on: no ant reached the goal
-  // (stopped by should_stop before one arrived, or every ant lost, as on long routes through
-  // mazes), so a robot always gets a route when one exists; or, with
+  // `path` is the cheapest route geodesic EACI's islands sit on (its search's): no ant reached
+  // the goal (stopped by should_stop before one arrived, or every ant lost, as on long routes
+  // through mazes), so a robot always gets a route when one exists; or, with
   // PlanOptions::never_worse_than_search, the colony's best scored worse (colony_combined_cost).
   bool route_from_search = false;
   // With never_worse_than_search: the combined cost of the colony's best route that the
