@@ -319,11 +319,8 @@ TEST(PlannerLimits, StopCheckDuringSetUpGivesTheSearchRouteWithGeodesicIslands) 
   EXPECT_EQ(eaci::test::routeDefect(grid, r.path, Cell{0, 0}, Cell{19, 19}), "");
 }
 
-// One ant, one iteration, no heuristic (beta 0): the ant wanders, and where it still arrives its
-// route is longer than the only cheapest one, the diagonal of the open 12 x 12 map, 11 sqrt 2.
-// never_worse_than_search then returns the diagonal its islands sit on instead.
 namespace {
-// One ant, one iteration, no heuristic (beta 0): an ant that wanders.
+// An ant that wanders: one ant, one iteration, no heuristic (beta 0).
 eaci::Parameters oneWanderingAnt() {
   eaci::Parameters p;
   p.ants = 1;
@@ -338,6 +335,9 @@ eaci::PlanOptions neverWorseThanSearch() {
 }
 }  // namespace
 
+// One ant, one iteration, no heuristic (beta 0): the ant wanders, and where it still arrives its
+// route is longer than the only cheapest one, the diagonal of the open 12 x 12 map, 11 sqrt 2.
+// never_worse_than_search then returns the diagonal its islands sit on instead.
 TEST(PlannerLimits, NeverWorseThanSearchReturnsTheSearchRouteInsteadOfALuckyAntsDetour) {
   const CostGrid grid(12, 12, false);
   const double diagonal = 11 * std::sqrt(2.0);
