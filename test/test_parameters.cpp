@@ -110,7 +110,12 @@ TEST(Parameters, SetByName) {
   EXPECT_EQ(p.smooth_tolerance, 0.2);
   eaci::setParameter(p, "round_corners", "2");
   EXPECT_EQ(p.round_corners, 2);
-  EXPECT_EQ(eaci::parameterNames().size(), 40u);  // 24, turn_cost(_unit), smooth_tolerance, round_corners and MAACO's 12
+  eaci::setParameter(p, "way_cost_factor", "0.8");
+  EXPECT_EQ(p.way_cost_factor, 0.8);
+  eaci::setParameter(p, "way_corridor", "12");
+  EXPECT_EQ(p.way_corridor, 12);
+  // 24, turn_cost(_unit), smooth_tolerance, round_corners, way_cost_factor, way_corridor and MAACO's 12
+  EXPECT_EQ(eaci::parameterNames().size(), 42u);
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

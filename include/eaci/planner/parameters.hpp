@@ -56,6 +56,15 @@ struct Parameters : ColonyParameters {
   // cell, or the average cell of the cheapest route between start and goal
   // (planner/turn_cost_unit.hpp; plan() prices turns at turn_cost x that cell's cost).
   TurnCostUnit turn_cost_unit = TurnCostUnit::kFreeCell;
+  // The way and the route within it (planner.hpp, grid/way_corridor.hpp): with way_cost_factor
+  // > 0 the plan first finds the cheapest route (the exact search, turns priced as the plan
+  // prices them) with cost_factor = way_cost_factor, a lighter weighting of the costmap's
+  // costs that is nearer to length and turns, that is to driving time; then plans with
+  // cost_factor on the cells within way_corridor cells of it. The way (which gaps, which
+  // doors) is chosen by the lighter weighting, the route's shape within it (the middle of
+  // each gap) by cost_factor. 0 = off: one weighting for both.
+  double way_cost_factor = 0.0;
+  int way_corridor = 16;
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.
@@ -109,6 +118,12 @@ inline std::string validationError(const Parameters& p) {
          "stretch it replaces (got " << p.smooth_tolerance << ")";
   else if (p.round_corners < 0 || p.round_corners > 4)
     e << "round_corners must be in 0..4, the passes of corner rounding, 0 = off (got " << p.round_corners << ")";
+  else if (!finite(p.way_cost_factor) || p.way_cost_factor < 0 || p.way_cost_factor > 1e6)
+    e << "way_cost_factor must be a number in [0, 1e6], the cost_factor that chooses the way, 0 = off (got "
+      << p.way_cost_factor << ")";
+  else if (p.way_corridor < 1 || p.way_corridor > 100)
+    e << "way_corridor must be in 1..100 cells, how far the route may stray from the way (got " << p.way_corridor
+      << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
 }
@@ -223,6 +238,8 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"turn_cost", fieldAccess("turn_cost", &Parameters::turn_cost)},
       {"turn_cost_unit", wordAccess("turn_cost_unit", &Parameters::turn_cost_unit,
                                     {TurnCostUnit::kFreeCell, TurnCostUnit::kRouteCell})},
+      {"way_cost_factor", fieldAccess("way_cost_factor", &Parameters::way_cost_factor)},
+      {"way_corridor", fieldAccess("way_corridor", &Parameters::way_corridor)},
   };
   return table;
 }
