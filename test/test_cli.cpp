@@ -763,6 +763,17 @@ TEST_F(CliTest, RawMapRoutesAroundAHighCostBand) {
   for (const json& cell : {json::array({0, 2}), json::array({0, 3}), json::array({0, 4})})
     EXPECT_NE(std::find(walled["path"].begin(), walled["path"].end(), cell), walled["path"].end()) << cell.dump();
 
+  EXPECT_EQ(detour["way"], json::array());  // way_cost_factor 0: no way
+
+  // The way by cost_factor 0.1 runs straight through the band (6.4 against the detour's 10.49);
+  // within a row of it cost_factor 3 has no detour: 5 free moves and one of (50 + 3 x 200) / 50.
+  const json within = runJson(common + " --algorithm astar --set way_cost_factor=0.1 --set way_corridor=1", &r);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(within["way"].size(), 7u);
+  for (const auto& cell : within["way"]) EXPECT_EQ(cell[0], 4);
+  EXPECT_NEAR(within["cost"].get<double>(), 18.0, 1e-9);
+  for (const auto& cell : within["path"]) EXPECT_GE(cell[0], 3);
+
   // EACI finds the detour too (its cost is at most A*'s plus a little on such a small map).
   const json eaci = runJson(common + " --algorithm eaci --seed 3", &r);
   ASSERT_EQ(r.exit_code, 0) << r.err;

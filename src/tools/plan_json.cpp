@@ -97,6 +97,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
   j["islands"] = r.islands;
+  j["way"] = r.way;  // way_cost_factor > 0: the route the plan kept within way_corridor cells of; else []
 
   j["time_ms"] = context.time_ms ? json(finiteOrNull(*context.time_ms)) : json(nullptr);
   j["seed"] = context.parameters.seed;
