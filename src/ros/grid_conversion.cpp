@@ -85,7 +85,8 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
 
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation,
-                      const std::optional<Eigen::Vector2d>& past_goal) {
+                      const std::optional<Eigen::Vector2d>& past_goal,
+                      const std::vector<Eigen::Vector2d>& start_turn) {
   nav_msgs::Path path;
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
@@ -102,6 +103,15 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, cons
   }
   points.front() = {start.pose.position.x, start.pose.position.y};
   if (points.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
+  if (!start_turn.empty() && points.size() > 1) {
+    // The arc round the robot, then the route from where it leaves the arc's circle.
+    const Eigen::Vector2d origin = points.front();
+    const double radius = (start_turn.back() - origin).norm();
+    std::size_t first_beyond = 1;
+    while (first_beyond + 1 < points.size() && (points[first_beyond] - origin).norm() <= radius) ++first_beyond;
+    points.erase(points.begin() + 1, points.begin() + static_cast<std::ptrdiff_t>(first_beyond));
+    points.insert(points.begin() + 1, start_turn.begin(), start_turn.end());
+  }
   const bool runs_past = past_goal && points.size() > 1;
   if (runs_past) points.insert(points.end() - 1, *past_goal);
   std::vector<double> headings =

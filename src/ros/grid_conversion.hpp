@@ -57,7 +57,8 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
 nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp,
                       eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
-                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt);
+                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt,
+                      const std::vector<Eigen::Vector2d>& start_turn = {});
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);

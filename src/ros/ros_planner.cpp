@@ -185,7 +185,7 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   const TfMapFrame frame = rosFrame(reply);
   const nav_msgs::Path path =
       toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
-             reply.past_goal);
+             reply.past_goal, reply.start_turn);
   plan = path.poses;
   const double convert_ms = msSince(convert_start);
   const auto publish_start = std::chrono::steady_clock::now();

@@ -33,6 +33,7 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"route_hysteresis", fieldAccess<Options>("route_hysteresis", &Options::route_hysteresis)},
       {"price_goal_heading", fieldAccess<Options>("price_goal_heading", &Options::price_goal_heading)},
       {"run_past_goal", fieldAccess<Options>("run_past_goal", &Options::run_past_goal)},
+      {"lead_start_turn", fieldAccess<Options>("lead_start_turn", &Options::lead_start_turn)},
       {"orientation_mode",
        {[](Options& o, const std::string& v) {
           try {
@@ -132,6 +133,9 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
   else if (!std::isfinite(options.run_past_goal) || options.run_past_goal < 0 || options.run_past_goal > 0.5)
     e << "run_past_goal must be in [0, 0.5] m, how far the plan runs on past the goal before it ends there, "
          "0 = off (got " << options.run_past_goal << ")";
+  else if (!std::isfinite(options.lead_start_turn) || options.lead_start_turn < 0 || options.lead_start_turn > 0.5)
+    e << "lead_start_turn must be in [0, 0.5] m, the radius of the arc a plan that leaves behind the robot "
+         "begins with (dwa_local_planner's forward_point_distance), 0 = off (got " << options.lead_start_turn << ")";
   return e.str();
 }
 

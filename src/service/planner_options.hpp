@@ -48,6 +48,11 @@ struct RosPlannerOptions {
   // within xy_goal_tolerance of the goal instead of crawling the last decimetres. Only through
   // cells the route could enter; 0 = the plan ends at the goal. In [0, 0.5].
   double run_past_goal = 0.0;
+  // m: a plan whose route leaves more than 90 deg off the robot's heading begins with an arc of
+  // this radius round the robot, from its heading the shorter way onto the route's
+  // (src/service/start_turn.hpp): dwa_local_planner's nose point follows it and the robot turns
+  // in place the short way round. Set it to dwa's forward_point_distance. 0 = off. In [0, 0.5].
+  double lead_start_turn = 0.0;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base

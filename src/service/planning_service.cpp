@@ -14,6 +14,7 @@
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
 #include "past_goal.hpp"
+#include "start_turn.hpp"
 #include "route_defect.hpp"
 #include "start_cell.hpp"
 
@@ -436,6 +437,8 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   reply.past_goal = pointPastGoal(view, frame, reply.result.smoothed_path, reply.goal, options.run_past_goal);
+  reply.start_turn = startTurnArc(view, frame, reply.result.smoothed_path, request.start, request.start_yaw,
+                                  options.lead_start_turn);
   const bool colony_replaced = std::isfinite(reply.result.colony_combined_cost);
   if (colony_replaced)
     say(LogLevel::kInfo, "the colony's best route scored " + eaci::formatNumber(reply.result.colony_combined_cost) +

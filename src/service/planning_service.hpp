@@ -113,6 +113,9 @@ struct PlanReply {
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the reachable cell within tolerance
   // run_past_goal: the point the path runs on to past `goal` before it ends there (past_goal.hpp).
   std::optional<Eigen::Vector2d> past_goal;
+  // lead_start_turn: the arc the path begins with after the start, round the robot the short way
+  // onto the route (start_turn.hpp); empty: none.
+  std::vector<Eigen::Vector2d> start_turn;
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
   // route_hysteresis: result.smoothed_path is the route sent last, rejoined from the start,

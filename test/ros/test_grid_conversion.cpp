@@ -114,6 +114,32 @@ TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {
   EXPECT_DOUBLE_EQ(path.poses[4].pose.position.y, 2.25);
 }
 
+// lead_start_turn: the arc's points come right after the start pose, and the route goes on from
+// its first point beyond the arc's radius (0.6 m here: the centre of (2,1), 0.5 m from the
+// start, is left out); each pose faces the next one.
+TEST(GridConversion, APathThatLeadsTheStartTurnBeginsWithTheArc) {
+  ros::Time::init();
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  geometry_msgs::PoseStamped start, goal;
+  start.pose.position.x = -0.75;
+  start.pose.position.y = 2.25;  // centre of (2,0)
+  start.pose.orientation.w = 1.0;
+  goal.pose.position.x = 0.75;
+  goal.pose.position.y = 2.25;   // centre of (2,3)
+  goal.pose.orientation.w = 1.0;
+  const eaci::CellPath cells{{2, 0}, {2, 3}};
+  const std::vector<Eigen::Vector2d> arc{{-0.75, 2.85}, {-0.15, 2.25}};
+  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,
+                                     std::nullopt, arc);
+  ASSERT_EQ(path.poses.size(), 5u);  // start, the arc's two points, the centre of (2,2), the goal
+  const double expected[5][2] = {{-0.75, 2.25}, {-0.75, 2.85}, {-0.15, 2.25}, {0.25, 2.25}, {0.75, 2.25}};
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_DOUBLE_EQ(path.poses[k].pose.position.x, expected[k][0]) << k;
+    EXPECT_DOUBLE_EQ(path.poses[k].pose.position.y, expected[k][1]) << k;
+  }
+  EXPECT_NEAR(tf2::getYaw(path.poses[1].pose.orientation), -M_PI / 4, 1e-9);  // towards (-0.15, 2.25)
+}
+
 TEST(GridConversion, InflationGrowsObstaclesByTheRadius) {
   auto grid = sampleGrid();
   eaci_ros::inflateObstacles(grid, 0.5, 65);  // one cell

@@ -37,7 +37,7 @@ TEST(ReconfigureConfig, HoldsEveryTableParameterButCornerCuttingAndTheRunTimeRos
     if (name != "allow_corner_cutting") expected.insert(name);  // never on a robot
   for (const char* option : {"algorithm", "default_tolerance", "max_planning_time", "publish_plan",
                              "visualize_pheromone", "orientation_mode", "route_hysteresis", "price_goal_heading",
-                             "run_past_goal"})
+                             "run_past_goal", "lead_start_turn"})
     expected.insert(option);
   EXPECT_EQ(configNames(), expected);
 }

@@ -347,6 +347,51 @@ TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
   }
 }
 
+// lead_start_turn: a route that leaves more than 90 deg off the robot's heading begins with the
+// arc round the robot, every 30 deg from its heading the shorter way onto the route's, at that
+// radius (on a 0.1 m grid, a route due east from (1.05, 0.75)): facing 150 deg the arc runs
+// clockwise through north, 120, 90, 60, 30, 0 deg; facing -150 deg anticlockwise through south.
+// None within 90 deg (80, -89), without a heading, at radius 0, or through an obstacle or unknown space.
+TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
+  const auto planned = [](CostmapSnapshot costmap, double yaw, double radius) {
+    Log log;
+    PlanningService service(settings(), log.logger());
+    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+    config.options.lead_start_turn = radius;
+    configure(service, config);
+    PlanRequest r;
+    r.start = {1.05, 0.75};  // cell (4, 10)
+    r.goal = {2.55, 0.75};   // cell (4, 25)
+    r.start_yaw = yaw;
+    const PlanReply reply = service.plan(costmap, r);
+    EXPECT_TRUE(reply.ok()) << reply.error;
+    return reply;
+  };
+  CostmapSnapshot open = openCostmap(30, 12);
+  open.frame.resolution = 0.1;
+  const double deg = M_PI / 180.0;
+  for (const double sign : {1.0, -1.0}) {
+    const PlanReply reply = planned(open, sign * 150 * deg, 0.15);
+    ASSERT_EQ(reply.start_turn.size(), 5u) << sign;
+    for (int k = 0; k < 5; ++k) {
+      const double angle = sign * (120 - 30 * k) * deg;
+      EXPECT_NEAR(reply.start_turn[k].x(), 1.05 + 0.15 * std::cos(angle), 1e-9) << sign << " " << k;
+      EXPECT_NEAR(reply.start_turn[k].y(), 0.75 + 0.15 * std::sin(angle), 1e-9) << sign << " " << k;
+    }
+  }
+  EXPECT_EQ(planned(open, 100 * deg, 0.15).start_turn.size(), 4u);  // 100 deg: four steps of 25 deg
+  EXPECT_TRUE(planned(open, 80 * deg, 0.15).start_turn.empty());
+  EXPECT_TRUE(planned(open, -89 * deg, 0.15).start_turn.empty());
+  EXPECT_TRUE(planned(open, std::nan(""), 0.15).start_turn.empty());
+  EXPECT_TRUE(planned(open, 150 * deg, 0.0).start_turn.empty());
+  for (const std::uint8_t blocked : {kCostmapLethal, kCostmapUnknown}) {
+    CostmapSnapshot walled = open;
+    at(walled, 3, 9) = blocked;  // the 120 deg point, (0.975, 0.880)
+    EXPECT_TRUE(planned(walled, 150 * deg, 0.15).start_turn.empty()) << int{blocked};
+    EXPECT_EQ(planned(walled, -150 * deg, 0.15).start_turn.size(), 5u) << int{blocked};  // the other way round
+  }
+}
+
 bool routeGoesAbove(const eaci::CellPath& corners) {
   for (const eaci::Cell& c : corners)
     if (c.row > 10) return false;
@@ -495,6 +540,7 @@ TEST(PlannerOptions, EveryBadValueIsNamed) {
       {"landmarks", "65"},    {"landmarks", "-1"},     {"occupied_threshold", "0"}, {"algorithm", "dijkstra"},
       {"orientation_mode", "9"}, {"ants", "many"},     {"route_hysteresis", "-0.1"}, {"route_hysteresis", "nan"},
       {"route_hysteresis", "1.5"}, {"run_past_goal", "-0.05"}, {"run_past_goal", "nan"}, {"run_past_goal", "0.6"},
+      {"lead_start_turn", "-0.1"}, {"lead_start_turn", "inf"}, {"lead_start_turn", "0.51"},
       {"no_such_parameter", "1"}};
   for (const auto& [name, text] : bad) {
     eaci::Parameters params = rosDefaultParameters();
