@@ -9,11 +9,11 @@
 # space and the navigation workspace first (docs/ros.md, "Driving to the lab goals").
 #
 # Usage: scripts/drive_compare.sh [--runs N] [--rounds R] [--out DIR] [--map YAML] [--goals "x,y;x,y"]
-#                                 [--start x,y] [LABEL=PLANNER[@PARAMS.yaml] ...]
+#                                 [--start x,y[,yaw]] [LABEL=PLANNER[@PARAMS.yaml] ...]
 #   defaults: 3 runs of 1 round; navfn=navfn/NavfnROS eaci=eaci_planner/EaciGlobalPlanner
 #   PARAMS.yaml is loaded into move_base's namespace over the config (the launch file's
 #   extra_params), e.g. eaci-tc1=eaci_planner/EaciGlobalPlanner@tc1.yaml with
-#   "EaciGlobalPlanner: {turn_cost: 1.0}".
+#   "EaciGlobalPlanner: {turn_cost: 1.0}". --start: where the car starts, yaw in radians (default 0).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs_count=3 rounds=1 out=out/drive map="" goals="" start=""
@@ -26,11 +26,17 @@ while [ $# -gt 0 ]; do
     --map) map=$2; shift 2 ;;
     --goals) goals=$2; shift 2 ;;
     --start) start=$2; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     -*) echo "drive_compare: unknown option $1 (--help)" >&2; exit 2 ;;
     *) specs+=("$1"); shift ;;
   esac
 done
+start_x="" start_y="" start_yaw=0
+if [ -n "$start" ]; then
+  IFS=, read -r start_x start_y start_yaw_given extra <<<"$start"
+  [ -n "$start_y" ] && [ -z "$extra" ] || { echo "drive_compare: --start wants x,y or x,y,yaw (got $start)" >&2; exit 2; }
+  start_yaw=${start_yaw_given:-0}
+fi
 [ ${#specs[@]} -gt 0 ] || specs=(navfn=navfn/NavfnROS eaci=eaci_planner/EaciGlobalPlanner)
 command -v roslaunch >/dev/null || { echo "drive_compare: roslaunch not found: source the ROS setup first" >&2; exit 1; }
 rospack find move_base >/dev/null 2>&1 || {
@@ -57,7 +63,7 @@ for run in $(seq 1 "$runs_count"); do
     roscore -p "$port" >"$out/$name.roscore.log" 2>&1 & pids+=($!)
     sleep 3
     roslaunch eaci_planner move_base_demo.launch base_global_planner:="$planner" extra_params:="$params" \
-      ${map:+map_file:=$(realpath "$map")} ${start:+start_x:=${start%,*} start_y:=${start#*,}} \
+      ${map:+map_file:=$(realpath "$map")} ${start:+start_x:=$start_x start_y:=$start_y start_yaw:=$start_yaw} \
       >"$out/$name.launch.log" 2>&1 & pids+=($!)
     /usr/bin/python3 scripts/drive_goals.py --rounds "$rounds" --json "$out/$name.json" --trace "$out/$name.csv" \
       ${map:+--map "$map"} ${goals:+--goals "$goals"} | tee "$out/$name.txt"
