@@ -29,6 +29,15 @@ nav_msgs::OccupancyGrid sampleGrid() {
   return g;
 }
 
+// A pose at (x, y) facing east.
+geometry_msgs::PoseStamped poseAt(double x, double y) {
+  geometry_msgs::PoseStamped pose;
+  pose.pose.position.x = x;
+  pose.pose.position.y = y;
+  pose.pose.orientation.w = 1.0;
+  return pose;
+}
+
 }  // namespace
 
 TEST(GridConversion, WorldToCellUsesTheBottomLeftOriginAndTopFirstRows) {
@@ -97,12 +106,7 @@ TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
 TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {
   ros::Time::init();
   const auto frame = eaci_ros::frameOf(sampleGrid());
-  geometry_msgs::PoseStamped start, goal;
-  start.pose.position.x = -0.75;
-  start.pose.position.y = 2.25;  // centre of (2,0)
-  goal.pose.position.x = 0.75;
-  goal.pose.position.y = 2.25;   // centre of (2,3)
-  goal.pose.orientation.w = 1.0;
+  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
   const eaci::CellPath cells{{2, 0}, {2, 3}};  // one segment east
   const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,
                                      Eigen::Vector2d{0.82, 2.25});
@@ -120,13 +124,7 @@ TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {
 TEST(GridConversion, APathThatLeadsTheStartTurnBeginsWithTheArc) {
   ros::Time::init();
   const auto frame = eaci_ros::frameOf(sampleGrid());
-  geometry_msgs::PoseStamped start, goal;
-  start.pose.position.x = -0.75;
-  start.pose.position.y = 2.25;  // centre of (2,0)
-  start.pose.orientation.w = 1.0;
-  goal.pose.position.x = 0.75;
-  goal.pose.position.y = 2.25;   // centre of (2,3)
-  goal.pose.orientation.w = 1.0;
+  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
   const eaci::CellPath cells{{2, 0}, {2, 3}};
   const std::vector<Eigen::Vector2d> arc{{-0.75, 2.85}, {-0.15, 2.25}};
   const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,

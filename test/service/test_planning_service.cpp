@@ -311,17 +311,23 @@ CostmapSnapshot blockWithDearSide(bool dear_above) {
 // (on a 0.1 m grid: east into a goal reached along a row, north-east into one reached along
 // the diagonal), and not at all into an obstacle, the inscribed band or unknown space, nor
 // when it is 0.
+// One A* plan by a service whose ROS options `set` changes.
+template <typename SetOptions>
+PlanReply aStarPlanWith(const CostmapSnapshot& costmap, const PlanRequest& request, SetOptions set) {
+  Log log;
+  PlanningService service(settings(), log.logger());
+  PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+  set(config.options);
+  configure(service, config);
+  return service.plan(costmap, request);
+}
+
 TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
   const auto planned = [](CostmapSnapshot costmap, eaci::Cell from, eaci::Cell to, double past) {
-    Log log;
-    PlanningService service(settings(), log.logger());
-    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
-    config.options.run_past_goal = past;
-    configure(service, config);
     PlanRequest r;
     r.start = {(from.col + 0.5) * 0.1, (costmap.frame.height - from.row - 0.5) * 0.1};
     r.goal = {(to.col + 0.5) * 0.1, (costmap.frame.height - to.row - 0.5) * 0.1};
-    const PlanReply reply = service.plan(costmap, r);
+    const PlanReply reply = aStarPlanWith(costmap, r, [past](RosPlannerOptions& o) { o.run_past_goal = past; });
     EXPECT_TRUE(reply.ok()) << reply.error;
     EXPECT_NEAR((reply.goal - r.goal).norm(), 0.0, 1e-9);
     return reply;
@@ -354,16 +360,11 @@ TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
 // None within 90 deg (80, -89), without a heading, at radius 0, or through an obstacle or unknown space.
 TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
   const auto planned = [](CostmapSnapshot costmap, double yaw, double radius) {
-    Log log;
-    PlanningService service(settings(), log.logger());
-    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
-    config.options.lead_start_turn = radius;
-    configure(service, config);
     PlanRequest r;
     r.start = {1.05, 0.75};  // cell (4, 10)
     r.goal = {2.55, 0.75};   // cell (4, 25)
     r.start_yaw = yaw;
-    const PlanReply reply = service.plan(costmap, r);
+    const PlanReply reply = aStarPlanWith(costmap, r, [radius](RosPlannerOptions& o) { o.lead_start_turn = radius; });
     EXPECT_TRUE(reply.ok()) << reply.error;
     return reply;
   };
