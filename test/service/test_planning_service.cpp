@@ -357,7 +357,8 @@ TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
 // arc round the robot, every 30 deg from its heading the shorter way onto the route's, at that
 // radius (on a 0.1 m grid, a route due east from (1.05, 0.75)): facing 150 deg the arc runs
 // clockwise through north, 120, 90, 60, 30, 0 deg; facing -150 deg anticlockwise through south.
-// None within 90 deg (80, -89), without a heading, at radius 0, or through an obstacle or unknown space.
+// None within 90 deg (80, -89), without a heading, at radius 0, or through an obstacle, the inscribed
+// band or unknown space.
 TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
   const auto planned = [](CostmapSnapshot costmap, double yaw, double radius) {
     PlanRequest r;
@@ -385,7 +386,7 @@ TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
   EXPECT_TRUE(planned(open, -89 * deg, 0.15).start_turn.empty());
   EXPECT_TRUE(planned(open, std::nan(""), 0.15).start_turn.empty());
   EXPECT_TRUE(planned(open, 150 * deg, 0.0).start_turn.empty());
-  for (const std::uint8_t blocked : {kCostmapLethal, kCostmapUnknown}) {
+  for (const std::uint8_t blocked : {kCostmapLethal, kCostmapInscribed, kCostmapUnknown}) {
     CostmapSnapshot walled = open;
     at(walled, 3, 9) = blocked;  // the 120 deg point, (0.975, 0.880)
     EXPECT_TRUE(planned(walled, 150 * deg, 0.15).start_turn.empty()) << int{blocked};
