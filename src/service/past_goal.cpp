@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "eaci/path/smoothing.hpp"
+#include "known_free.hpp"
 
 namespace eaci_service {
 
@@ -19,13 +19,8 @@ std::optional<Eigen::Vector2d> pointPastGoal(const eaci::GridView& view, const e
   const Eigen::Vector2d past = goal + distance * (goal - *from).normalized();
   const std::optional<eaci::Cell> past_cell = frame.worldToCell(past);
   if (!past_cell) return std::nullopt;
-  // Every cell the way there passes or touches: on the map, no obstacle, not unknown.
-  bool clear = true;
-  eaci::traverseSegment(route.back(), *past_cell, [&](eaci::Cell c, double) {
-    clear = view.isFree(c) && view.value(c) != view.interpretation().unknown_value;
-    return clear;
-  });
-  return clear ? std::optional<Eigen::Vector2d>(past) : std::nullopt;
+  if (!knownFreeAlong(view, route.back(), *past_cell)) return std::nullopt;
+  return past;
 }
 
 }  // namespace eaci_service

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <optional>
 
+#include "eaci/path/orientation.hpp"
+#include "known_free.hpp"
+
 namespace eaci_service {
 
 std::vector<Eigen::Vector2d> startTurnArc(const eaci::GridView& view, const eaci::MapFrame& frame,
@@ -19,17 +22,20 @@ std::vector<Eigen::Vector2d> startTurnArc(const eaci::GridView& view, const eaci
   }
   if (!ahead) return {};
   const Eigen::Vector2d d = *ahead - start;
-  const double turn = std::remainder(std::atan2(d.y(), d.x()) - start_yaw, 2.0 * M_PI);  // (-pi, pi], + = anticlockwise
+  const double turn = eaci::shortestAngle(start_yaw, std::atan2(d.y(), d.x()));  // + = anticlockwise
   if (std::abs(turn) <= M_PI / 2) return {};
   constexpr double kStep = M_PI / 6;
   const int steps = static_cast<int>(std::ceil(std::abs(turn) / kStep - 1e-9));
   std::vector<Eigen::Vector2d> arc;
+  std::optional<eaci::Cell> previous;
   for (int k = 1; k <= steps; ++k) {
     const double angle = start_yaw + turn * k / steps;
     const Eigen::Vector2d p = start + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
     const std::optional<eaci::Cell> cell = frame.worldToCell(p);
-    if (!cell || !view.isFree(*cell) || view.value(*cell) == view.interpretation().unknown_value) return {};
+    // Its cell, and the cells on the way from the point before.
+    if (!cell || !knownFreeAlong(view, previous.value_or(*cell), *cell)) return {};
     arc.push_back(p);
+    previous = cell;
   }
   return arc;
 }

@@ -25,7 +25,8 @@ namespace eaci_service {
 // `radius` m from the start, every 30 deg from the heading round the shorter way onto the route's
 // direction (towards its first point at least 2 x radius away), the last one on that direction.
 // Empty when radius is not positive, the yaw is not finite, the route turns 90 deg or less, it
-// has no point that far, or an arc point's cell is off the map, an obstacle or unknown in `view`.
+// has no point that far, or an arc point's cell, or a cell between two of them, is off the map,
+// an obstacle or unknown in `view` (knownFree).
 std::vector<Eigen::Vector2d> startTurnArc(const eaci::GridView& view, const eaci::MapFrame& frame,
                                           const eaci::CellPath& route, const Eigen::Vector2d& start,
                                           double start_yaw, double radius);

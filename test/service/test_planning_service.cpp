@@ -358,7 +358,7 @@ TEST(PlanningService, ThePathRunsOnPastTheGoalTheWayTheRouteArrives) {
 // radius (on a 0.1 m grid, a route due east from (1.05, 0.75)): facing 150 deg the arc runs
 // clockwise through north, 120, 90, 60, 30, 0 deg; facing -150 deg anticlockwise through south.
 // None within 90 deg (80, -89), without a heading, at radius 0, or through an obstacle, the inscribed
-// band or unknown space.
+// band or unknown space, at an arc point or between two of them.
 TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
   const auto planned = [](CostmapSnapshot costmap, double yaw, double radius) {
     PlanRequest r;
@@ -392,6 +392,12 @@ TEST(PlanningService, APlanThatLeavesBehindTheRobotBeginsWithTheShortWayRound) {
     EXPECT_TRUE(planned(walled, 150 * deg, 0.15).start_turn.empty()) << int{blocked};
     EXPECT_EQ(planned(walled, -150 * deg, 0.15).start_turn.size(), 5u) << int{blocked};  // the other way round
   }
+  // At radius 0.17 the 120 and 90 deg points are (0.965, 0.897) and (1.050, 0.920), cells (3, 9)
+  // and (2, 10): the way between them passes their shared corner, touching (2, 9), no point's cell.
+  CostmapSnapshot corner = open;
+  at(corner, 2, 9) = kCostmapLethal;
+  EXPECT_EQ(planned(open, 150 * deg, 0.17).start_turn.size(), 5u);
+  EXPECT_TRUE(planned(corner, 150 * deg, 0.17).start_turn.empty());
 }
 
 bool routeGoesAbove(const eaci::CellPath& corners) {

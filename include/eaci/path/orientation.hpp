@@ -53,8 +53,11 @@ inline double travelHeading(double yaw, OrientationMode mode) {
   }
 }
 
-namespace detail {
+// The turn from heading `from` to heading `to` the shorter way round, radians in [-pi, pi]
+// (+ = anticlockwise).
 inline double shortestAngle(double from, double to) { return std::remainder(to - from, 2.0 * M_PI); }
+
+namespace detail {
 
 // Headings from index `first` to `last` turn evenly from heading[first] to heading[last].
 inline void interpolateHeadings(std::vector<double>& heading, std::size_t first, std::size_t last) {
@@ -115,7 +118,7 @@ inline std::vector<double> orientPoints(const std::vector<Eigen::Vector2d>& poin
       if (n >= 3) {
         std::size_t first = n - 3;  // global_planner: from the third-last pose back while straight
         const double last_direction = heading[n - 3];
-        while (first > 0 && std::abs(detail::shortestAngle(heading[first - 1], last_direction)) <= 0.35) --first;
+        while (first > 0 && std::abs(shortestAngle(heading[first - 1], last_direction)) <= 0.35) --first;
         heading.front() = start_yaw;
         heading.back() = goal_yaw;
         detail::interpolateHeadings(heading, first, n - 1);
