@@ -577,6 +577,7 @@ TEST_F(CliTest, JsonHasClearanceAndMeanCellCost) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_EQ(j["path"].size(), 7u);
   EXPECT_DOUBLE_EQ(j["min_clearance_m"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(j["smoothed_min_clearance_m"].get<double>(), 2.0);  // unsmoothed: the same cells' lines
   EXPECT_DOUBLE_EQ(j["mean_cell_cost"].get<double>(), 0.0);  // a map file has no graded costs
 
   // Along row 1 the route is next to the wall.
@@ -593,6 +594,7 @@ TEST_F(CliTest, JsonHasClearanceAndMeanCellCost) {
   const json failed = runJson("--map " + quote(tmp("wall.txt").string()) + " --start 0,0 --goal 2,6 --algorithm astar", &r);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_TRUE(failed["min_clearance_m"].is_null());
+  EXPECT_TRUE(failed["smoothed_min_clearance_m"].is_null());
   EXPECT_TRUE(failed["mean_cell_cost"].is_null());
 }
 

@@ -56,6 +56,26 @@ TEST(PathMetrics, MinClearanceOfADiagonalNeighbourIsRootTwo) {
   EXPECT_DOUBLE_EQ(eaci::minClearance(grid, {{1, 1}}), 0.0);  // a blocked cell
 }
 
+TEST(PathMetrics, PolylineClearanceIsMeasuredAlongTheLinesNotOnlyAtCellCentres) {
+  // One obstacle at (2, 2) in 5 x 6 cells. The line (0,0) -> (3,5) (x = col, y = row) passes it
+  // at |2 x 5 - 2 x 3| / sqrt(34) = 4 / sqrt 34 = 0.686 cells; the cells it runs through are
+  // at least 1 from it (minClearance of its two corners: (0,0) 2.83, (3,5) 3.16).
+  std::vector<std::vector<int>> rows(5, std::vector<int>(6, 0));
+  rows[2][2] = 1;
+  const CostGrid grid = CostGrid::fromRows(rows, false);
+  EXPECT_NEAR(eaci::minPolylineClearance(grid, {{0, 0}, {3, 5}}), 4.0 / std::sqrt(34.0), 1e-12);
+  // Two segments, the nearer point at a corner: (0,0) -> (0,4) -> (4,4): the corner (0,4) is
+  // sqrt 8 away, the first segment passes (0,2) at 2, the second (2,4) at 2.
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, {{0, 0}, {0, 4}, {4, 4}}), 2.0);
+  // A long line, many pieces: (4,0) -> (4,5) passes (4,2) at 2.
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, {{4, 0}, {4, 5}}), 2.0);
+  // One corner alone: minClearance's.
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, {{0, 0}}), std::sqrt(8.0));
+  // No obstacle: infinite.
+  const CostGrid open = CostGrid::fromRows({{0, 0, 0}, {0, 0, 0}}, false);
+  EXPECT_EQ(eaci::minPolylineClearance(open, {{0, 0}, {1, 2}}), std::numeric_limits<double>::infinity());
+}
+
 TEST(PathMetrics, MinClearanceFindsTheEuclideanNearestBeyondTheFirstRing) {
   // On ring 3 at (3, 3) diagonal lies sqrt 18 = 4.24; ring 4 holds (4, 0) at exactly 4.
   std::vector<std::vector<int>> rows(9, std::vector<int>(9, 0));

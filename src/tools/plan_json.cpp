@@ -55,6 +55,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // Clearance (route cell centre to nearest obstacle cell centre of the map, metres; null without
   // obstacles) and mean cell cost 0..254 of the route, on the grid it was planned on.
   j["min_clearance_m"] = nullptr;
+  j["smoothed_min_clearance_m"] = nullptr;
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
     const UnknownPolicy unknown = context.unknown_policy == "expensive" ? UnknownPolicy::kExpensive : UnknownPolicy::kObstacle;
@@ -62,6 +63,9 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     // Clearance from the map's own obstacles; costs as planned (--inflate: the inflated costs).
     const CostGrid on_map = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);
     j["min_clearance_m"] = finiteOrNull(minClearance(on_map, r.path) * map->resolution);
+    // The same along the smoothed route's lines, where the robot drives.
+    if (!r.smoothed_path.empty())
+      j["smoothed_min_clearance_m"] = finiteOrNull(minPolylineClearance(on_map, r.smoothed_path) * map->resolution);
     const CostGrid planned = context.planned_on
                                  ? CostGrid::fromView(*context.planned_on, context.parameters.allow_corner_cutting)
                                  : on_map;

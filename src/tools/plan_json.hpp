@@ -27,7 +27,7 @@ struct PlanContext {
   EndHeadings end_headings;             // --start-yaw, --goal-yaw (radians; NaN: none)
   std::optional<double> time_ms;        // wall time of the plan() call; empty if it was not called
   // The cells the planners read when they are not the map's own (--inflate: the map's costmap_2d
-  // costs); min_clearance_m and mean_cell_cost are measured on them. Empty: the map.
+  // costs); mean_cell_cost is measured on them (the clearances on the map). Empty: the map.
   std::optional<GridView> planned_on;
   // The run failed before plan() on the arguments themselves (not a status of plan()'s):
   // outcome "bad_input", status null.
@@ -39,7 +39,7 @@ struct PlanContext {
 std::string outcomeWord(const PlanResult& result, const PlanContext& context);
 
 // The report: success, outcome, error (only when failed), status, algorithm, length, cost, combined_cost, length_m,
-// min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
+// min_clearance_m, smoothed_min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
 // iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
 // ants_per_iteration, lost_ants_per_iteration, best_cost_per_iteration, best_cost_so_far (null where
 // infinite; the same again as best_length_per_iteration and best_length_so_far, their names until

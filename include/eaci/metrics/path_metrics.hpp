@@ -15,7 +15,6 @@
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/distance_transform.hpp"
 #include "eaci/grid/moves.hpp"
-#include "eaci/grid/moves.hpp"
 
 namespace eaci {
 
@@ -41,6 +40,14 @@ inline double totalTurnDegrees(const CellPath& path) {
   return std::round(total * 1e9) / 1e9;
 }
 
+// 1 for each obstacle cell of the grid, 0 elsewhere (row-major), for the distance transform.
+inline std::vector<std::uint8_t> obstacleCells(const CostGrid& grid) {
+  std::vector<std::uint8_t> obstacle(grid.cellCount());
+  const std::uint8_t* cells = grid.cellBytes();
+  for (std::size_t i = 0; i < obstacle.size(); ++i) obstacle[i] = cells[i] == CostGrid::kObstacle ? 1 : 0;
+  return obstacle;
+}
+
 // The smallest distance, in cells, from the centre of a route cell to the centre of the
 // nearest obstacle cell (times the resolution: metres). A diagonal neighbour of an obstacle has
 // clearance sqrt 2, a cell two columns beside a wall 2, a blocked route cell 0. Cells beyond the
@@ -49,14 +56,58 @@ inline double totalTurnDegrees(const CellPath& path) {
 // Exact Euclidean distances in O(width x height) (squaredDistancesToSources,
 // grid/distance_transform.hpp), however far the obstacles are.
 inline double minClearance(const CostGrid& grid, const CellPath& route) {
-  std::vector<std::uint8_t> obstacle(grid.cellCount());
-  const std::uint8_t* cells = grid.cellBytes();
-  for (std::size_t i = 0; i < obstacle.size(); ++i) obstacle[i] = cells[i] == CostGrid::kObstacle ? 1 : 0;
-  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacle);
+  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacleCells(grid));
   double best = std::numeric_limits<double>::infinity();
   for (const Cell& cell : route)
     if (grid.contains(cell)) best = std::min(best, squared[grid.index(cell)]);
   return std::sqrt(best);
+}
+
+// The smallest distance, in cells, from the polyline through `corners` (the smoothed route, its
+// straight segments between cell centres: where the robot drives) to the centre of the nearest
+// obstacle cell; minClearance's measure, but along the lines and not only at cell centres (a
+// line between two cells may pass nearer a wall than either centre). Exact: the lines are cut
+// into pieces of at most 4 cells, and each piece measures against every obstacle cell that could
+// be nearer it than the best so far (within its start's clearance, bounded by the distance
+// transform, plus half its length of its middle). +infinity without obstacles or corners;
+// segments with a corner off the grid are skipped.
+inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners) {
+  const std::vector<std::uint8_t> obstacle = obstacleCells(grid);
+  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacle);
+  const auto distanceAt = [&](const Eigen::Vector2d& p) {  // from p's cell's centre
+    const Cell c{static_cast<int>(std::lround(p.y())), static_cast<int>(std::lround(p.x()))};
+    return grid.contains(c) ? std::sqrt(squared[grid.index(c)]) : std::numeric_limits<double>::infinity();
+  };
+  double best = std::numeric_limits<double>::infinity();
+  for (const Cell& c : corners)
+    if (grid.contains(c)) best = std::min(best, std::sqrt(squared[grid.index(c)]));
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    if (!grid.contains(corners[k - 1]) || !grid.contains(corners[k])) continue;
+    const Eigen::Vector2d a(corners[k - 1].col, corners[k - 1].row), b(corners[k].col, corners[k].row);
+    const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / 4.0)));
+    for (int i = 0; i < pieces; ++i) {
+      const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(i) / pieces);
+      const Eigen::Vector2d q = a + (b - a) * (static_cast<double>(i + 1) / pieces);
+      // The piece's nearest obstacle lies within (p's distance, at most its cell's + 0.71) + |pq|
+      // of its middle, and no nearer than best matters.
+      const double reach = std::min(distanceAt(p) + 0.71, best) + (q - p).norm() / 2 + 1e-9;
+      if (!std::isfinite(reach)) continue;
+      const Eigen::Vector2d m = (p + q) / 2, d = q - p;
+      const double length2 = d.squaredNorm();
+      const int r0 = std::max(0, static_cast<int>(std::floor(m.y() - reach)));
+      const int r1 = std::min(grid.height() - 1, static_cast<int>(std::ceil(m.y() + reach)));
+      const int c0 = std::max(0, static_cast<int>(std::floor(m.x() - reach)));
+      const int c1 = std::min(grid.width() - 1, static_cast<int>(std::ceil(m.x() + reach)));
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) {
+          if (obstacle[grid.index(Cell{r, c})] == 0) continue;
+          const Eigen::Vector2d o(c, r);
+          const double t = length2 > 0 ? std::clamp((o - p).dot(d) / length2, 0.0, 1.0) : 0.0;
+          best = std::min(best, (p + t * d - o).norm());
+        }
+    }
+  }
+  return best;
 }
 
 // The mean cost 0..254 (CostGrid::cost) of the route's cells. NaN when the route is empty or
