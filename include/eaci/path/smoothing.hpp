@@ -2,9 +2,12 @@
 // (beyond the paper; off for its benchmarks). A shortcut is taken only when the straight
 // segment touches no obstacle cell, corners included, costs no more than the stretch of route
 // it replaces, and enters no cell costlier than the costliest cell of that stretch: the
-// smoothed route is never costlier, and on a costmap never nearer the walls, than the grid
-// route (on a map without costs only the first two conditions bite). A tolerance (the
-// smooth_tolerance parameter) relaxes the last two by a factor, below.
+// smoothed route is never costlier, and on a costmap passes no cell nearer the walls, than the
+// grid route (on a map without costs only the first two conditions bite). The rule measures
+// cells: a line may pass up to 0.7 cell nearer a wall than the centres of the cells it passes
+// (minPolylineClearance, metrics/path_metrics.hpp, measures the lines; a bound on the costs
+// interpolated between the centres was tried and not taken: docs/ros.md, "A longer lead into
+// the goal"). A tolerance (the smooth_tolerance parameter) relaxes the last two by a factor, below.
 #pragma once
 
 #include <algorithm>
