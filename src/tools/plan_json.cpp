@@ -62,10 +62,12 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     const auto lethal = static_cast<std::uint8_t>(context.parameters.lethal_cost);  // maps of costs (mode: raw)
     // Clearance from the map's own obstacles; costs as planned (--inflate: the inflated costs).
     const CostGrid on_map = CostGrid::fromView(map->view(unknown, lethal), context.parameters.allow_corner_cutting);
-    j["min_clearance_m"] = finiteOrNull(minClearance(on_map, r.path) * map->resolution);
+    const ObstacleDistances distances = obstacleTransform(on_map);  // one transform for both
+    j["min_clearance_m"] = finiteOrNull(minClearance(on_map, r.path, distances) * map->resolution);
     // The same along the smoothed route's lines, where the robot drives.
     if (!r.smoothed_path.empty())
-      j["smoothed_min_clearance_m"] = finiteOrNull(minPolylineClearance(on_map, r.smoothed_path) * map->resolution);
+      j["smoothed_min_clearance_m"] =
+          finiteOrNull(minPolylineClearance(on_map, r.smoothed_path, distances) * map->resolution);
     const CostGrid planned = context.planned_on
                                  ? CostGrid::fromView(*context.planned_on, context.parameters.allow_corner_cutting)
                                  : on_map;

@@ -48,6 +48,18 @@ inline std::vector<std::uint8_t> obstacleCells(const CostGrid& grid) {
   return obstacle;
 }
 
+// The obstacle cells and the squared distance transform from them, made once for both
+// clearance measures below (an O(width x height) pass each).
+struct ObstacleDistances {
+  std::vector<std::uint8_t> obstacle;  // obstacleCells
+  std::vector<double> squared;         // squaredDistancesToSources
+};
+inline ObstacleDistances obstacleTransform(const CostGrid& grid) {
+  ObstacleDistances d{obstacleCells(grid), {}};
+  d.squared = squaredDistancesToSources(grid.width(), grid.height(), d.obstacle);
+  return d;
+}
+
 // The smallest distance, in cells, from the centre of a route cell to the centre of the
 // nearest obstacle cell (times the resolution: metres). A diagonal neighbour of an obstacle has
 // clearance sqrt 2, a cell two columns beside a wall 2, a blocked route cell 0. Cells beyond the
@@ -55,12 +67,15 @@ inline std::vector<std::uint8_t> obstacleCells(const CostGrid& grid) {
 // is empty or the grid has no obstacle; route cells off the grid are skipped.
 // Exact Euclidean distances in O(width x height) (squaredDistancesToSources,
 // grid/distance_transform.hpp), however far the obstacles are.
-inline double minClearance(const CostGrid& grid, const CellPath& route) {
-  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacleCells(grid));
+inline double minClearance(const CostGrid& grid, const CellPath& route, const ObstacleDistances& distances) {
+  const std::vector<double>& squared = distances.squared;
   double best = std::numeric_limits<double>::infinity();
   for (const Cell& cell : route)
     if (grid.contains(cell)) best = std::min(best, squared[grid.index(cell)]);
   return std::sqrt(best);
+}
+inline double minClearance(const CostGrid& grid, const CellPath& route) {
+  return minClearance(grid, route, obstacleTransform(grid));
 }
 
 // The smallest distance, in cells, from the polyline through `corners` (the smoothed route, its
@@ -71,9 +86,9 @@ inline double minClearance(const CostGrid& grid, const CellPath& route) {
 // be nearer it than the best so far (within its start's clearance, bounded by the distance
 // transform, plus half its length of its middle). +infinity without obstacles or corners;
 // segments with a corner off the grid are skipped.
-inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners) {
-  const std::vector<std::uint8_t> obstacle = obstacleCells(grid);
-  const std::vector<double> squared = squaredDistancesToSources(grid.width(), grid.height(), obstacle);
+inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners, const ObstacleDistances& distances) {
+  const std::vector<std::uint8_t>& obstacle = distances.obstacle;
+  const std::vector<double>& squared = distances.squared;
   const auto distanceAt = [&](const Eigen::Vector2d& p) {  // from p's cell's centre
     const Cell c{static_cast<int>(std::lround(p.y())), static_cast<int>(std::lround(p.x()))};
     return grid.contains(c) ? std::sqrt(squared[grid.index(c)]) : std::numeric_limits<double>::infinity();
@@ -108,6 +123,9 @@ inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners
     }
   }
   return best;
+}
+inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners) {
+  return minPolylineClearance(grid, corners, obstacleTransform(grid));
 }
 
 // The mean cost 0..254 (CostGrid::cost) of the route's cells. NaN when the route is empty or
