@@ -93,9 +93,7 @@ inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners
     const Cell c{static_cast<int>(std::lround(p.y())), static_cast<int>(std::lround(p.x()))};
     return grid.contains(c) ? std::sqrt(squared[grid.index(c)]) : std::numeric_limits<double>::infinity();
   };
-  double best = std::numeric_limits<double>::infinity();
-  for (const Cell& c : corners)
-    if (grid.contains(c)) best = std::min(best, std::sqrt(squared[grid.index(c)]));
+  double best = minClearance(grid, corners, distances);  // the corners' own, a first bound for the lines
   for (std::size_t k = 1; k < corners.size(); ++k) {
     if (!grid.contains(corners[k - 1]) || !grid.contains(corners[k])) continue;
     const Eigen::Vector2d a(corners[k - 1].col, corners[k - 1].row), b(corners[k].col, corners[k].row);
