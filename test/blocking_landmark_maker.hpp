@@ -71,6 +71,10 @@ class LandmarkGate {
   // `count` times.
   bool waitEntered(int count) { return waitFor([&] { return entered_ >= count; }); }
   bool waitLeft(int count) { return waitFor([&] { return left_ >= count; }); }
+  // Waits (as above) until `count` calls have returned having seen their cancel flag set: a
+  // released call counts only once its thread has run again, which on a loaded machine may be
+  // after the test's next step.
+  bool waitCancelled(int count) { return waitFor([&] { return cancelled_ >= count; }); }
   int entered() {
     std::lock_guard<std::mutex> lock(mutex_);
     return entered_;
