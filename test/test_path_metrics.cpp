@@ -76,6 +76,17 @@ TEST(PathMetrics, PolylineClearanceIsMeasuredAlongTheLinesNotOnlyAtCellCentres) 
   EXPECT_EQ(eaci::minPolylineClearance(open, {{0, 0}, {1, 2}}), std::numeric_limits<double>::infinity());
 }
 
+TEST(PathMetrics, PolylineClearanceTakesCornersOffTheCellCentres) {
+  // One obstacle at (row 2, col 2). The line x = 4.5 (between columns 4 and 5), rows 0..4,
+  // passes it at 2.5; the corner (x 0.5, y 2.5) alone is sqrt(1.5^2 + 0.5^2) from it.
+  std::vector<std::vector<int>> rows(5, std::vector<int>(6, 0));
+  rows[2][2] = 1;
+  const CostGrid grid = CostGrid::fromRows(rows, false);
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, eaci::CellPolyline{{4.5, 0.0}, {4.5, 4.0}}, eaci::obstacleTransform(grid)), 2.5);
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, eaci::CellPolyline{{0.5, 2.5}}, eaci::obstacleTransform(grid)),
+                   std::sqrt(2.5));
+}
+
 TEST(PathMetrics, MinClearanceFindsTheEuclideanNearestBeyondTheFirstRing) {
   // On ring 3 at (3, 3) diagonal lies sqrt 18 = 4.24; ring 4 holds (4, 0) at exactly 4.
   std::vector<std::vector<int>> rows(9, std::vector<int>(9, 0));

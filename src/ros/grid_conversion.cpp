@@ -87,19 +87,35 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, cons
                       const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation,
                       const std::optional<Eigen::Vector2d>& past_goal,
                       const std::vector<Eigen::Vector2d>& start_turn) {
+  return toPath(eaci::cellPolyline(cells), frame, start, goal, stamp, orientation, past_goal, start_turn);
+}
+
+nav_msgs::Path toPath(const eaci::CellPolyline& corners, const TfMapFrame& frame,
+                      const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                      const ros::Time& stamp, eaci::OrientationMode orientation,
+                      const std::optional<Eigen::Vector2d>& past_goal,
+                      const std::vector<Eigen::Vector2d>& start_turn) {
   nav_msgs::Path path;
   path.header.frame_id = frame.frame_id;
   path.header.stamp = stamp;
-  if (cells.empty()) return path;
-  // Cell centres; along a smoothed route's long segments, a pose in every cell crossed.
-  std::vector<Eigen::Vector2d> points{frame.cellToWorld(cells.front())};
-  for (std::size_t k = 1; k < cells.size(); ++k) {
-    const Eigen::Vector2d a = frame.cellToWorld(cells[k - 1]), b = frame.cellToWorld(cells[k]);
-    if (eaci::directionBetween(cells[k - 1], cells[k]) >= 0) {
-      points.push_back(b);
+  if (corners.empty()) return path;
+  // The corners; along a smoothed route's long segments, a pose in every cell crossed (between
+  // two cell centres, the middle of each cell's stretch; off the centres, every cell of length).
+  const auto on_centre = [](const eaci::CellPoint& p) { return p == eaci::cellPoint(eaci::cellOfPoint(p)); };
+  std::vector<Eigen::Vector2d> points{frame.pointToWorld(corners.front())};
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    const Eigen::Vector2d a = frame.pointToWorld(corners[k - 1]), b = frame.pointToWorld(corners[k]);
+    if (on_centre(corners[k - 1]) && on_centre(corners[k])) {
+      const eaci::Cell from = eaci::cellOfPoint(corners[k - 1]), to = eaci::cellOfPoint(corners[k]);
+      if (eaci::directionBetween(from, to) >= 0) {
+        points.push_back(b);
+        continue;
+      }
+      for (double t : eaci::cellMidpointsAlong(from, to)) points.push_back(a + t * (b - a));
       continue;
     }
-    for (double t : eaci::cellMidpointsAlong(cells[k - 1], cells[k])) points.push_back(a + t * (b - a));
+    const int pieces = std::max(1, static_cast<int>(std::ceil((corners[k] - corners[k - 1]).norm())));
+    for (int i = 1; i <= pieces; ++i) points.push_back(a + (b - a) * (static_cast<double>(i) / pieces));
   }
   points.front() = {start.pose.position.x, start.pose.position.y};
   if (points.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};

@@ -59,6 +59,13 @@ nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, cons
                       eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
                       const std::optional<Eigen::Vector2d>& past_goal = std::nullopt,
                       const std::vector<Eigen::Vector2d>& start_turn = {});
+// The same through corners off the cell centres (PlanReply::driven: lines bent through gaps,
+// eaci/path/gap_centring.hpp), a pose every cell of length along their segments.
+nav_msgs::Path toPath(const eaci::CellPolyline& corners, const TfMapFrame& frame,
+                      const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
+                      const ros::Time& stamp, eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
+                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt,
+                      const std::vector<Eigen::Vector2d>& start_turn = {});
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);

@@ -184,7 +184,7 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   target.pose.position.y = reply.goal.y();
   const TfMapFrame frame = rosFrame(reply);
   const nav_msgs::Path path =
-      toPath(reply.result.smoothed_path, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
+      toPath(reply.driven, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
              reply.past_goal, reply.start_turn);
   plan = path.poses;
   const double convert_ms = msSince(convert_start);

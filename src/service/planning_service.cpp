@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "eaci/grid/nearest_free.hpp"
+#include "eaci/path/gap_centring.hpp"
 #include "eaci/path/route_hysteresis.hpp"
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
@@ -434,6 +435,10 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     reply.result.smoothed_length = reply.result.length;
   }
   keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config, plan_options.end_headings);
+  // On the costmap's own grid, not the way's corridor the route was smoothed in (its border is no wall).
+  eaci::StopPoll centring_poll(should_stop);
+  reply.driven = eaci::centreInGaps(grid, reply.result.smoothed_path, params.smooth_path ? params.centre_gaps : 0.0,
+                                    &centring_poll);
   phaseDone(reply.phases.check);
   if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
   reply.past_goal = pointPastGoal(view, frame, reply.result.smoothed_path, reply.goal, options.run_past_goal);

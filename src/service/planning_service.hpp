@@ -116,6 +116,9 @@ struct PlanReply {
   // lead_start_turn: the arc the path begins with after the start, round the robot the short way
   // onto the route (start_turn.hpp); empty: none.
   std::vector<Eigen::Vector2d> start_turn;
+  // The corners the path goes through: result.smoothed_path's, with centre_gaps > 0 its lines
+  // bent through the middle of the gaps they pass (eaci/path/gap_centring.hpp; cell coordinates).
+  eaci::CellPolyline driven;
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
   // route_hysteresis: result.smoothed_path is the route sent last, rejoined from the start,

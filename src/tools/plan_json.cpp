@@ -16,6 +16,7 @@
 #include "common/parameters_json.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/metrics/path_metrics.hpp"
+#include "eaci/path/gap_centring.hpp"
 
 namespace eaci::tools {
 namespace {
@@ -56,6 +57,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // obstacles) and mean cell cost 0..254 of the route, on the grid it was planned on.
   j["min_clearance_m"] = nullptr;
   j["smoothed_min_clearance_m"] = nullptr;
+  j["driven_min_clearance_m"] = nullptr;
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
     const UnknownPolicy unknown = context.unknown_policy == "expensive" ? UnknownPolicy::kExpensive : UnknownPolicy::kObstacle;
@@ -72,6 +74,22 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
                                  ? CostGrid::fromView(*context.planned_on, context.parameters.allow_corner_cutting)
                                  : on_map;
     j["mean_cell_cost"] = finiteOrNull(meanCellCost(planned, r.path));
+    // With centre_gaps: the smoothed route's lines bent through the gaps, on the grid planned on
+    // (as the planning service bends them on the costmap), and their clearance.
+    if (context.parameters.smooth_path && context.parameters.centre_gaps > 0 && !r.smoothed_path.empty()) {
+      const CellPolyline driven = centreInGaps(planned, r.smoothed_path, context.parameters.centre_gaps);
+      json points = json::array(), points_xy = json::array();
+      for (const CellPoint& p : driven) {
+        points.push_back(json::array({p.y(), p.x()}));  // [row, col], as the cells of smoothed_path
+        if (map) {
+          const Eigen::Vector2d w = map->pointToWorld(p);
+          points_xy.push_back(json::array({w.x(), w.y()}));
+        }
+      }
+      j["driven_path"] = std::move(points);
+      j["driven_path_xy"] = std::move(points_xy);
+      j["driven_min_clearance_m"] = finiteOrNull(minPolylineClearance(on_map, driven, distances) * map->resolution);
+    }
   }
 
   json path = json::array(), path_xy = json::array();

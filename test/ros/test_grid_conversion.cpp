@@ -101,6 +101,24 @@ TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
   EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.5, 1e-9);
 }
 
+// A corner off the cell centres (a line bent through a gap, eaci/path/gap_centring.hpp) is a
+// pose where it lies, and its segments have a pose every cell of length: (col 1.5, row 1.6) is
+// x = -1 + 2.0 x 0.5 = 0, y = 2 + (3 - 1.6 - 0.5) x 0.5 = 2.45; each segment, 1.55 cells, in two.
+TEST(GridConversion, CornersOffTheCellCentresArePosesWhereTheyLie) {
+  ros::Time::init();
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  EXPECT_EQ(frame.pointToWorld(eaci::cellPoint(Cell{1, 2})), frame.cellToWorld(Cell{1, 2}));
+  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
+  const eaci::CellPolyline corners{{0.0, 2.0}, {1.5, 1.6}, {3.0, 2.0}};
+  const auto path = eaci_ros::toPath(corners, frame, start, goal, ros::Time(1.0));
+  ASSERT_EQ(path.poses.size(), 5u);  // start, halfway, the corner, halfway, the goal
+  EXPECT_NEAR(path.poses[2].pose.position.x, 0.0, 1e-12);
+  EXPECT_NEAR(path.poses[2].pose.position.y, 2.45, 1e-12);
+  EXPECT_NEAR(path.poses[1].pose.position.x, -0.375, 1e-12);
+  EXPECT_NEAR(path.poses[1].pose.position.y, 2.35, 1e-12);
+  EXPECT_NEAR(tf2::getYaw(path.poses[2].pose.orientation), std::atan2(-0.2, 0.75), 1e-9);  // down the rows: y falls
+}
+
 // run_past_goal: a pose at the point past the goal comes just before the goal's, facing on
 // the way the route arrived (not back at the goal); the goal pose stays last.
 TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/cell_point.hpp"
 #include "eaci/grid/cell_numbering.hpp"
 
 namespace eaci {
@@ -40,6 +41,11 @@ struct MapFrame {
   // World position of the cell's centre: the paper's cell centre (Eq. 3-4) in metres, moved
   // to the origin.
   Eigen::Vector2d cellToWorld(Cell cell) const { return origin + cellCentre(cell, height, resolution); }
+  // World position of a point in cell coordinates (CellPoint: x = column, y = row, centres at
+  // whole numbers), as cellToWorld of the cell it lies in, off the centre by as much.
+  Eigen::Vector2d pointToWorld(const CellPoint& p) const {
+    return origin + Eigen::Vector2d((p.x() + 0.5) * resolution, (height - p.y() - 0.5) * resolution);
+  }
 };
 
 }  // namespace eaci

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/cell_point.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/distance_transform.hpp"
 #include "eaci/grid/moves.hpp"
@@ -85,18 +86,22 @@ inline double minClearance(const CostGrid& grid, const CellPath& route) {
 // into pieces of at most 4 cells, and each piece measures against every obstacle cell that could
 // be nearer it than the best so far (within its start's clearance, bounded by the distance
 // transform, plus half its length of its middle). +infinity without obstacles or corners;
-// segments with a corner off the grid are skipped.
-inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners, const ObstacleDistances& distances) {
+// segments with a corner off the grid are skipped. The corners may lie off the cell centres
+// (CellPolyline: a route bent through gaps, path/gap_centring.hpp).
+inline double minPolylineClearance(const CostGrid& grid, const CellPolyline& corners,
+                                   const ObstacleDistances& distances) {
   const std::vector<std::uint8_t>& obstacle = distances.obstacle;
   const std::vector<double>& squared = distances.squared;
   const auto distanceAt = [&](const Eigen::Vector2d& p) {  // from p's cell's centre
-    const Cell c{static_cast<int>(std::lround(p.y())), static_cast<int>(std::lround(p.x()))};
+    const Cell c = cellOfPoint(p);
     return grid.contains(c) ? std::sqrt(squared[grid.index(c)]) : std::numeric_limits<double>::infinity();
   };
-  double best = minClearance(grid, corners, distances);  // the corners' own, a first bound for the lines
-  for (std::size_t k = 1; k < corners.size(); ++k) {
-    if (!grid.contains(corners[k - 1]) || !grid.contains(corners[k])) continue;
-    const Eigen::Vector2d a(corners[k - 1].col, corners[k - 1].row), b(corners[k].col, corners[k].row);
+  // A first bound for the lines: each corner is at most its cell's clearance + 0.71 from an obstacle.
+  double best = std::numeric_limits<double>::infinity();
+  for (const CellPoint& corner : corners) best = std::min(best, distanceAt(corner) + 0.71);
+  for (std::size_t k = 0; k < corners.size(); ++k) {  // k = 0: the first corner alone
+    const Eigen::Vector2d a = corners[k > 0 ? k - 1 : 0], b = corners[k];
+    if (!grid.contains(cellOfPoint(a)) || !grid.contains(cellOfPoint(b))) continue;
     const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / 4.0)));
     for (int i = 0; i < pieces; ++i) {
       const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(i) / pieces);
@@ -121,6 +126,9 @@ inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners
     }
   }
   return best;
+}
+inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners, const ObstacleDistances& distances) {
+  return minPolylineClearance(grid, cellPolyline(corners), distances);
 }
 inline double minPolylineClearance(const CostGrid& grid, const CellPath& corners) {
   return minPolylineClearance(grid, corners, obstacleTransform(grid));
