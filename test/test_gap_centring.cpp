@@ -87,6 +87,22 @@ TEST(GapCentring, NeverEntersACellCostlierThanTheLinesCostliest) {
   EXPECT_GE(clearance(grid, driven), 2.0);  // never nearer the walls than the line
 }
 
+TEST(GapCentring, ACornerInAnEvenDoorMovesToItsMiddle) {
+  // The door of rows 8..11 (middle 9.5) with a corner of the route in it, on row 9: 2 from the
+  // wall end at row 7, 3 from the one at row 12. It moves away from row 7's end, across to the
+  // middle, 2.5 from both; the lines beside it then pass no nearer (no bend).
+  const CostGrid grid = wallWithDoor(8, 11);
+  const CellPolyline driven = eaci::centreInGaps(grid, {{9, 0}, {9, 10}, {9, 20}}, 1.0);
+  ASSERT_EQ(driven.size(), 3u);
+  EXPECT_DOUBLE_EQ(driven[1].x(), 10.0);
+  EXPECT_NEAR(driven[1].y(), 9.5, 0.1);
+  EXPECT_GT(clearance(grid, driven), 2.4);
+  // The start and the goal stay where they are, in the door or not.
+  const CellPolyline from_the_door = eaci::centreInGaps(grid, {{9, 10}, {9, 20}}, 1.0);
+  EXPECT_EQ(from_the_door.front(), CellPoint(10, 9));
+  EXPECT_EQ(from_the_door.back(), CellPoint(20, 9));
+}
+
 TEST(GapCentring, OffEmptyOrStoppedTheCornersStayAsTheyAre) {
   const CostGrid grid = wallWithDoor(8, 11);
   const CellPath route{{9, 0}, {9, 20}};

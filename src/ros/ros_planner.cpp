@@ -183,9 +183,11 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   target.pose.position.x = reply.goal.x();
   target.pose.position.y = reply.goal.y();
   const TfMapFrame frame = rosFrame(reply);
-  const nav_msgs::Path path =
-      toPath(reply.driven, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
-             reply.past_goal, reply.start_turn);
+  // The route bent through the gaps (PlanReply::driven), or the smoothed route's cells.
+  const eaci::CellPolyline corners =
+      reply.driven.empty() ? eaci::cellPolyline(reply.result.smoothed_path) : reply.driven;
+  const nav_msgs::Path path = toPath(corners, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
+                                     reply.past_goal, reply.start_turn);
   plan = path.poses;
   const double convert_ms = msSince(convert_start);
   const auto publish_start = std::chrono::steady_clock::now();

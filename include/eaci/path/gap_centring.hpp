@@ -1,21 +1,24 @@
 // Lines through the middle of the gaps they pass (beyond the paper; issue #30). The smoothed
 // route's corners are cell centres, so a line through a door an even number of cells wide runs
 // half a cell off its middle, and a line that leaves a gap on a slant (towards a goal beyond it)
-// passes one wall end up to 0.7 cell nearer than the cells it crosses say (smoothing.hpp). Here
-// each straight line may be bent, off the cell lattice, at its narrowest point (the point of the
-// line nearest an obstacle cell's centre): that point moves across the line, away from the
-// obstacle, by at most `max_shift` cells, to where the two new lines keep furthest from every
-// obstacle (the middle of the gap when a wall is on the other side). A bend is kept only when
-// the lines' least clearance (minPolylineClearance's measure, metrics/path_metrics.hpp, outside
-// a cell of their ends, where the route turns anyway) gains kMinGapGain, and its lines touch
-// no obstacle and enter no cell costlier than the line's costliest: never nearer the walls, as
-// the smoother's rule. Each new line is then looked at again (a line may pass several gaps).
+// passes one wall end up to 0.7 cell nearer than the cells it crosses say (smoothing.hpp). Here,
+// off the cell lattice and by at most `max_shift` cells: each inner corner that is narrower than
+// its neighbours (a corner in a door) moves away from its nearest obstacle, and then each line
+// may bend at its narrowest point (the point of the line nearest an obstacle cell's centre),
+// which moves across the line away from that obstacle; each to where the lines through it keep
+// furthest from every obstacle (the middle of the gap when a wall is on the other side). A move
+// is kept only when the lines' least clearance (minPolylineClearance's measure, metrics/
+// path_metrics.hpp, outside a cell of their other ends) gains kMinGapGain, never past their
+// ends' own, and the lines touch no obstacle and enter no cell costlier than before: never
+// nearer the walls, as the smoother's rule. Each bent line is looked at again (a line may pass
+// several gaps). Start and goal stay.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "eaci/grid/cell.hpp"
@@ -125,6 +128,33 @@ inline bool lineKeepsBelow(const CostGrid& grid, const CellPoint& a, const CellP
   return true;
 }
 
+// The point `from` moved by up to `max_shift` cells along `across` (in steps of 0.05 cell) to
+// where the lines a -> m -> b keep furthest from `obstacles`, if that gains kMinGapGain over
+// `before` (their clearance through `from`) without passing `ends` (a's and b's own), and they
+// touch no obstacle and enter no cell costlier than the lines through `from`; else nothing.
+inline std::optional<CellPoint> widestPointAcross(const CostGrid& grid, const CellPolyline& obstacles,
+                                                  const CellPoint& a, const CellPoint& from, const CellPoint& b,
+                                                  const CellPoint& across, double before, double ends,
+                                                  double max_shift, StopPoll* stop) {
+  int peak = 0;  // the costliest cell of a -> from -> b: the moved lines enter none costlier
+  for (const auto& [p, q] : {std::make_pair(a, from), std::make_pair(from, b)}) {
+    const int steps = std::max(1, static_cast<int>(std::ceil((q - p).norm() * 4.0)));
+    for (int i = 0; i <= steps; ++i) peak = std::max<int>(peak, grid.cost(cellOfPoint(p + (q - p) * (double(i) / steps))));
+  }
+  const std::size_t work = obstacles.size() * static_cast<std::size_t>((from - a).norm() + (b - from).norm() + 1) * 4;
+  double best = before + kMinGapGain;
+  std::optional<CellPoint> widest;
+  constexpr double kShiftStep = 0.05;
+  for (double shift = kShiftStep; shift <= max_shift + 1e-9 && best < ends; shift += kShiftStep) {
+    const CellPoint m = from + shift * across;
+    if (stop != nullptr && stop->tick(work)) break;
+    if (!lineKeepsBelow(grid, a, m, peak) || !lineKeepsBelow(grid, m, b, peak)) break;
+    const double clearance = std::min(ends, polylineClearanceAmong(obstacles, a, m, b, best));
+    if (clearance > best) best = clearance, widest = m;
+  }
+  return widest;
+}
+
 // The line a -> b bent through the gaps it passes (above), up to `depth` levels: the bends,
 // appended to `out` (a and b not).
 inline void bendThroughGaps(const CostGrid& grid, CellPoint a, CellPoint b, double max_shift, int depth,
@@ -148,38 +178,47 @@ inline void bendThroughGaps(const CostGrid& grid, CellPoint a, CellPoint b, doub
   if (before + kMinGapGain >= ends) return;
   CellPoint across(-(b - a).y() / length, (b - a).x() / length);  // across the line, away from it
   if (across.dot(narrowest - nearest) < 0) across = -across;
-  int peak = 0;  // the line's costliest cell: the bent lines enter none costlier
-  const int steps = std::max(1, static_cast<int>(std::ceil(length * 4.0)));
-  for (int i = 0; i <= steps; ++i) peak = std::max<int>(peak, grid.cost(cellOfPoint(a + (b - a) * (double(i) / steps))));
-  double best = before + kMinGapGain;
-  CellPoint bend = narrowest;
-  bool bent = false;
-  constexpr double kShiftStep = 0.05;
-  for (double shift = kShiftStep; shift <= max_shift + 1e-9; shift += kShiftStep) {
-    const CellPoint m = narrowest + shift * across;
-    if (stop != nullptr && stop->tick(obstacles.size() * static_cast<std::size_t>(length) * 8)) break;
-    if (!lineKeepsBelow(grid, a, m, peak) || !lineKeepsBelow(grid, m, b, peak)) break;
-    const double clearance = std::min(ends, polylineClearanceAmong(obstacles, a, m, b, best));
-    if (clearance > best) best = clearance, bend = m, bent = true;
-  }
-  if (!bent) return;
-  bendThroughGaps(grid, a, bend, max_shift, depth - 1, stop, out);
-  out.push_back(bend);
-  bendThroughGaps(grid, bend, b, max_shift, depth - 1, stop, out);
+  const std::optional<CellPoint> bend =
+      widestPointAcross(grid, obstacles, a, narrowest, b, across, before, ends, max_shift, stop);
+  if (!bend) return;
+  bendThroughGaps(grid, a, *bend, max_shift, depth - 1, stop, out);
+  out.push_back(*bend);
+  bendThroughGaps(grid, *bend, b, max_shift, depth - 1, stop, out);
 }
 
-// The smoothed route's corners as points, each line bent through the gaps it passes (above);
-// the corners themselves stay. `max_shift` cells (0 = the corners as they are). Once `stop`
-// says stop the lines not yet looked at stay straight.
+// The corner c between a and b moved away from its nearest obstacle (widestPointAcross), when
+// it is narrower than a and b: a corner in a door, a cell off its middle.
+inline CellPoint cornerMovedOffTheWalls(const CostGrid& grid, const CellPoint& a, const CellPoint& c,
+                                        const CellPoint& b, double max_shift, StopPoll* stop) {
+  CellPolyline obstacles = obstaclesAlong(grid, a, c, max_shift, stop);
+  const CellPolyline beyond = obstaclesAlong(grid, c, b, max_shift, stop);
+  obstacles.insert(obstacles.end(), beyond.begin(), beyond.end());
+  CellPoint nearest = c;
+  const double at_corner = clearanceAmong(obstacles, c, &nearest);
+  if (at_corner >= kGapReach || at_corner == 0 || (stop != nullptr && stop->stopped())) return c;
+  const double before = polylineClearanceAmong(obstacles, a, c, b);
+  const double ends = std::min(clearanceAmong(obstacles, a), clearanceAmong(obstacles, b));
+  if (before + kMinGapGain >= ends) return c;
+  const CellPoint across = (c - nearest) / at_corner;
+  return widestPointAcross(grid, obstacles, a, c, b, across, before, ends, max_shift, stop).value_or(c);
+}
+
+// The smoothed route's corners as points: each inner corner narrower than its neighbours moved
+// off the walls, then each line bent through the gaps it passes (above); start and goal stay.
+// `max_shift` cells (0 = the corners as they are). Once `stop` says stop the rest stays as it is.
 inline CellPolyline centreInGaps(const CostGrid& grid, const CellPath& corners, double max_shift,
                                  StopPoll* stop = nullptr) {
-  if (corners.empty()) return {};
-  CellPolyline out{cellPoint(corners.front())};
-  for (std::size_t k = 1; k < corners.size(); ++k) {
-    const CellPoint a = out.back(), b = cellPoint(corners[k]);
-    if (max_shift > 0 && grid.contains(corners[k - 1]) && grid.contains(corners[k]))
-      bendThroughGaps(grid, a, b, max_shift, kGapBendDepth, stop, out);
-    out.push_back(b);
+  CellPolyline moved = cellPolyline(corners);
+  if (!(max_shift > 0) || moved.empty()) return moved;
+  for (const Cell& c : corners)
+    if (!grid.contains(c)) return moved;
+  for (std::size_t k = 1; k + 1 < moved.size(); ++k)
+    if (stop == nullptr || !stop->stopped())
+      moved[k] = cornerMovedOffTheWalls(grid, moved[k - 1], moved[k], moved[k + 1], max_shift, stop);
+  CellPolyline out{moved.front()};
+  for (std::size_t k = 1; k < moved.size(); ++k) {
+    if (stop == nullptr || !stop->stopped()) bendThroughGaps(grid, out.back(), moved[k], max_shift, kGapBendDepth, stop, out);
+    out.push_back(moved[k]);
   }
   return out;
 }
