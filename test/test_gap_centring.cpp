@@ -2,6 +2,7 @@
 // doors whose middles and clearances are worked out here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <vector>
@@ -87,20 +88,15 @@ TEST(GapCentring, NeverEntersACellCostlierThanTheLinesCostliest) {
   EXPECT_GE(clearance(grid, driven), 2.0);  // never nearer the walls than the line
 }
 
-TEST(GapCentring, ACornerInAnEvenDoorMovesToItsMiddle) {
-  // The door of rows 8..11 (middle 9.5) with a corner of the route in it, on row 9: 2 from the
-  // wall end at row 7, 3 from the one at row 12. It moves away from row 7's end, across to the
-  // middle, 2.5 from both; the lines beside it then pass no nearer (no bend).
+TEST(GapCentring, CornersStayEvenInADoor) {
+  // The door of rows 8..11 with a corner of the route in it, on row 9, half a cell off the
+  // middle: corners are not moved (only lines bend), nor are start and goal.
   const CostGrid grid = wallWithDoor(8, 11);
   const CellPolyline driven = eaci::centreInGaps(grid, {{9, 0}, {9, 10}, {9, 20}}, 1.0);
-  ASSERT_EQ(driven.size(), 3u);
-  EXPECT_DOUBLE_EQ(driven[1].x(), 10.0);
-  EXPECT_NEAR(driven[1].y(), 9.5, 0.1);
-  EXPECT_GT(clearance(grid, driven), 2.4);
-  // The start and the goal stay where they are, in the door or not.
-  const CellPolyline from_the_door = eaci::centreInGaps(grid, {{9, 10}, {9, 20}}, 1.0);
-  EXPECT_EQ(from_the_door.front(), CellPoint(10, 9));
-  EXPECT_EQ(from_the_door.back(), CellPoint(20, 9));
+  ASSERT_GE(driven.size(), 3u);
+  EXPECT_EQ(driven.front(), CellPoint(0, 9));
+  EXPECT_NE(std::find(driven.begin(), driven.end(), CellPoint(10, 9)), driven.end());
+  EXPECT_EQ(driven.back(), CellPoint(20, 9));
 }
 
 TEST(GapCentring, OffEmptyOrStoppedTheCornersStayAsTheyAre) {

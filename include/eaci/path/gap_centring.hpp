@@ -1,17 +1,17 @@
 // Lines through the middle of the gaps they pass (beyond the paper; issue #30). The smoothed
 // route's corners are cell centres, so a line through a door an even number of cells wide runs
 // half a cell off its middle, and a line that leaves a gap on a slant (towards a goal beyond it)
-// passes one wall end up to 0.7 cell nearer than the cells it crosses say (smoothing.hpp). Here,
-// off the cell lattice and by at most `max_shift` cells: each inner corner that is narrower than
-// its neighbours (a corner in a door) moves away from its nearest obstacle, and then each line
-// may bend at its narrowest point (the point of the line nearest an obstacle cell's centre),
-// which moves across the line away from that obstacle; each to where the lines through it keep
-// furthest from every obstacle (the middle of the gap when a wall is on the other side). A move
-// is kept only when the lines' least clearance (minPolylineClearance's measure, metrics/
-// path_metrics.hpp, outside a cell of their other ends) gains kMinGapGain, never past their
-// ends' own, and the lines touch no obstacle and enter no cell costlier than before: never
-// nearer the walls, as the smoother's rule. Each bent line is looked at again (a line may pass
-// several gaps). Start and goal stay.
+// passes one wall end up to 0.7 cell nearer than the cells it crosses say (smoothing.hpp). Here
+// each straight line may be bent, off the cell lattice, at its narrowest point (the point of the
+// line nearest an obstacle cell's centre): that point moves across the line, away from the
+// obstacle, by at most `max_shift` cells, to where the two new lines keep furthest from every
+// obstacle (the middle of the gap when a wall is on the other side). A bend is kept only when
+// the lines' least clearance (minPolylineClearance's measure, metrics/path_metrics.hpp, outside
+// a cell of their ends, where the route turns anyway) gains kMinGapGain, never past the ends'
+// own, and its lines touch no obstacle and enter no cell costlier than the line's costliest:
+// never nearer the walls, as the smoother's rule. Each new line is then looked at again (a line
+// may pass several gaps). The corners stay: moving a corner in a gap off the walls too was
+// driven and not taken (docs/ros.md, "Through the middle of a door").
 #pragma once
 
 #include <algorithm>
@@ -186,35 +186,15 @@ inline void bendThroughGaps(const CostGrid& grid, CellPoint a, CellPoint b, doub
   bendThroughGaps(grid, *bend, b, max_shift, depth - 1, stop, out);
 }
 
-// The corner c between a and b moved away from its nearest obstacle (widestPointAcross), when
-// it is narrower than a and b: a corner in a door, a cell off its middle.
-inline CellPoint cornerMovedOffTheWalls(const CostGrid& grid, const CellPoint& a, const CellPoint& c,
-                                        const CellPoint& b, double max_shift, StopPoll* stop) {
-  CellPolyline obstacles = obstaclesAlong(grid, a, c, max_shift, stop);
-  const CellPolyline beyond = obstaclesAlong(grid, c, b, max_shift, stop);
-  obstacles.insert(obstacles.end(), beyond.begin(), beyond.end());
-  CellPoint nearest = c;
-  const double at_corner = clearanceAmong(obstacles, c, &nearest);
-  if (at_corner >= kGapReach || at_corner == 0 || (stop != nullptr && stop->stopped())) return c;
-  const double before = polylineClearanceAmong(obstacles, a, c, b);
-  const double ends = std::min(clearanceAmong(obstacles, a), clearanceAmong(obstacles, b));
-  if (before + kMinGapGain >= ends) return c;
-  const CellPoint across = (c - nearest) / at_corner;
-  return widestPointAcross(grid, obstacles, a, c, b, across, before, ends, max_shift, stop).value_or(c);
-}
-
-// The smoothed route's corners as points: each inner corner narrower than its neighbours moved
-// off the walls, then each line bent through the gaps it passes (above); start and goal stay.
-// `max_shift` cells (0 = the corners as they are). Once `stop` says stop the rest stays as it is.
+// The smoothed route's corners as points, each line bent through the gaps it passes (above);
+// the corners themselves stay. `max_shift` cells (0 = the corners as they are). Once `stop`
+// says stop the lines not yet looked at stay straight.
 inline CellPolyline centreInGaps(const CostGrid& grid, const CellPath& corners, double max_shift,
                                  StopPoll* stop = nullptr) {
   CellPolyline moved = cellPolyline(corners);
   if (!(max_shift > 0) || moved.empty()) return moved;
   for (const Cell& c : corners)
     if (!grid.contains(c)) return moved;
-  for (std::size_t k = 1; k + 1 < moved.size(); ++k)
-    if (stop == nullptr || !stop->stopped())
-      moved[k] = cornerMovedOffTheWalls(grid, moved[k - 1], moved[k], moved[k + 1], max_shift, stop);
   CellPolyline out{moved.front()};
   for (std::size_t k = 1; k < moved.size(); ++k) {
     if (stop == nullptr || !stop->stopped()) bendThroughGaps(grid, out.back(), moved[k], max_shift, kGapBendDepth, stop, out);

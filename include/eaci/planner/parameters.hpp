@@ -52,10 +52,9 @@ struct Parameters : ColonyParameters {
   // roundCorners), each cut by the smoother's rule with the corner it cuts off as the stretch
   // replaced (never much nearer the walls than the bend); each pass splits a corner's turn in two. 0 = off.
   int round_corners = 0;
-  // With smooth_path: cells, how far a corner of the driven route that sits in a gap, and each
-  // line at its narrowest point, may move off the cell lattice towards the gap's middle
-  // (path/gap_centring.hpp; never nearer the walls, never into a costlier cell). 0 = off: the
-  // corners are cell centres.
+  // With smooth_path: cells, how far each line of the driven route may bend, off the cell
+  // lattice, at its narrowest point towards the middle of the gap it passes
+  // (path/gap_centring.hpp; never nearer the walls, never into a costlier cell). 0 = off.
   double centre_gaps = 0.0;
   // turn_cost, the price of turning, is the colonies' too: ColonyParameters. Its unit: a free
   // cell, or the average cell of the cheapest route between start and goal
@@ -124,7 +123,7 @@ inline std::string validationError(const Parameters& p) {
   else if (p.round_corners < 0 || p.round_corners > 4)
     e << "round_corners must be in 0..4, the passes of corner rounding, 0 = off (got " << p.round_corners << ")";
   else if (!finite(p.centre_gaps) || p.centre_gaps < 0 || p.centre_gaps > 4)
-    e << "centre_gaps must be a number of cells in [0, 4], how far a corner or line may move towards a gap's middle, 0 = off "
+    e << "centre_gaps must be a number of cells in [0, 4], how far a line may bend towards a gap's middle, 0 = off "
          "(got " << p.centre_gaps << ")";
   else if (!finite(p.way_cost_factor) || p.way_cost_factor < 0 || p.way_cost_factor > 1e6)
     e << "way_cost_factor must be a number in [0, 1e6], the cost_factor that chooses the way, 0 = off (got "
