@@ -1,6 +1,7 @@
 #include "plan_json.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -77,7 +78,10 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
     // With centre_gaps: the smoothed route's lines bent through the gaps, on the grid planned on
     // (as the planning service bends them on the costmap), and their clearance.
     if (context.parameters.smooth_path && context.parameters.centre_gaps > 0 && !r.smoothed_path.empty()) {
+      const auto centring_start = std::chrono::steady_clock::now();
       const CellPolyline driven = centreInGaps(planned, r.smoothed_path, context.parameters.centre_gaps);
+      const double centring_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - centring_start).count();
       json points = json::array(), points_xy = json::array();
       for (const CellPoint& p : driven) {
         points.push_back(json::array({p.y(), p.x()}));  // [row, col], as the cells of smoothed_path
@@ -89,6 +93,7 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
       j["driven_path"] = std::move(points);
       j["driven_path_xy"] = std::move(points_xy);
       j["driven_min_clearance_m"] = finiteOrNull(minPolylineClearance(on_map, driven, distances) * map->resolution);
+      j["driven_ms"] = centring_ms;  // bending the lines, after time_ms (the plan)
     }
   }
 

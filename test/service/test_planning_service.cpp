@@ -292,6 +292,41 @@ TEST(PlanningService, ASoundSmoothedRouteGoesOutAsItIs) {
   EXPECT_EQ(log.count("not drivable"), 0);
 }
 
+// centre_gaps: the route sent bends through the middle of a door 4 cells wide (rows 8..11 of a
+// wall down column 10: middle row 9.5) that the straight route along row 9 passes half a cell
+// off. Bent on the costmap itself: within the way's corridor (way_corridor 1 keeps rows 8..10)
+// the corridor's border, 2 cells from the route all along it, would leave no narrowest point.
+TEST(PlanningService, TheRouteSentBendsThroughADoorsMiddleOnTheCostmapItself) {
+  CostmapSnapshot costmap = openCostmap(21, 21);
+  for (int row = 0; row < 21; ++row)
+    if (row < 8 || row > 11) at(costmap, row, 10) = kCostmapLethal;
+  for (const bool within_a_way : {false, true}) {
+    Log log;
+    PlanningService service(settings(), log.logger());
+    PlanningService::Configuration config = configuration(eaci::Algorithm::kAStar);
+    config.params.smooth_path = true;
+    config.params.centre_gaps = 1.0;
+    if (within_a_way) {
+      config.params.way_cost_factor = 0.8;
+      config.params.way_corridor = 1;
+    }
+    configure(service, config);
+    const PlanReply reply = service.plan(costmap, request(costmap, {9, 0}, {9, 20}));
+    ASSERT_TRUE(reply.ok()) << reply.error;
+    ASSERT_EQ(reply.result.smoothed_path, (eaci::CellPath{{9, 0}, {9, 20}}));
+    ASSERT_EQ(reply.driven.size(), 3u) << "within a way: " << within_a_way;
+    EXPECT_NEAR(reply.driven[1].y(), 9.5, 0.1);  // the door's middle row
+    EXPECT_NEAR(reply.driven[1].x(), 10.0, 0.5);
+  }
+  // Off (0, the default): the corners as they are.
+  Log log;
+  PlanningService service(settings(), log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  const PlanReply reply = service.plan(costmap, request(costmap, {9, 0}, {9, 20}));
+  ASSERT_TRUE(reply.ok()) << reply.error;
+  EXPECT_EQ(reply.driven, eaci::cellPolyline(reply.result.smoothed_path));
+}
+
 // Two ways round a lethal block (rows 5..15, columns 15..25 of 41 x 21 cells of 1 m), the same
 // length by symmetry: from (10,2) to (10,38) above it, through rows 0..4, or below, rows 16..20.
 // Straight legs (10,2) -> (4,14) -> (4,26) -> (10,38) above: 2 sqrt(180) + 12 = 38.83. Cells of

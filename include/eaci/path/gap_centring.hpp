@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <optional>
 #include <vector>
 
@@ -67,9 +66,7 @@ inline CellPolyline obstaclesAlong(const CostGrid& grid, const CellPoint& a, con
   }
   std::sort(seen.begin(), seen.end());
   seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-  for (std::size_t index : seen) {
-    found.push_back(cellPoint(grid.cellAt(index)));
-  }
+  for (std::size_t index : seen) found.push_back(cellPoint(grid.cellAt(index)));
   return found;
 }
 
