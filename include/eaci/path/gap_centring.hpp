@@ -125,19 +125,17 @@ inline bool lineKeepsBelow(const CostGrid& grid, const CellPoint& a, const CellP
   return true;
 }
 
-// The point `from` moved by up to `max_shift` cells along `across` (in steps of 0.05 cell) to
+// The point `from` of the line a -> b moved by up to `max_shift` cells along `across` (in steps of 0.05 cell) to
 // where the lines a -> m -> b keep furthest from `obstacles`, if that gains kMinGapGain over
 // `before` (their clearance through `from`) without passing `ends` (a's and b's own), and they
-// touch no obstacle and enter no cell costlier than the lines through `from`; else nothing.
+// touch no obstacle and enter no cell costlier than the line's costliest; else nothing.
 inline std::optional<CellPoint> widestPointAcross(const CostGrid& grid, const CellPolyline& obstacles,
                                                   const CellPoint& a, const CellPoint& from, const CellPoint& b,
                                                   const CellPoint& across, double before, double ends,
                                                   double max_shift, StopPoll* stop) {
-  int peak = 0;  // the costliest cell of a -> from -> b: the moved lines enter none costlier
-  for (const auto& [p, q] : {std::make_pair(a, from), std::make_pair(from, b)}) {
-    const int steps = std::max(1, static_cast<int>(std::ceil((q - p).norm() * 4.0)));
-    for (int i = 0; i <= steps; ++i) peak = std::max<int>(peak, grid.cost(cellOfPoint(p + (q - p) * (double(i) / steps))));
-  }
+  int peak = 0;  // the costliest cell of the line a -> b (`from` lies on it): the bent lines enter none costlier
+  const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 4.0)));
+  for (int i = 0; i <= steps; ++i) peak = std::max<int>(peak, grid.cost(cellOfPoint(a + (b - a) * (double(i) / steps))));
   const std::size_t work = obstacles.size() * static_cast<std::size_t>((from - a).norm() + (b - from).norm() + 1) * 4;
   double best = before + kMinGapGain;
   std::optional<CellPoint> widest;
@@ -188,14 +186,14 @@ inline void bendThroughGaps(const CostGrid& grid, CellPoint a, CellPoint b, doub
 // says stop the lines not yet looked at stay straight.
 inline CellPolyline centreInGaps(const CostGrid& grid, const CellPath& corners, double max_shift,
                                  StopPoll* stop = nullptr) {
-  CellPolyline moved = cellPolyline(corners);
-  if (!(max_shift > 0) || moved.empty()) return moved;
+  const CellPolyline points = cellPolyline(corners);
+  if (!(max_shift > 0) || points.empty()) return points;
   for (const Cell& c : corners)
-    if (!grid.contains(c)) return moved;
-  CellPolyline out{moved.front()};
-  for (std::size_t k = 1; k < moved.size(); ++k) {
-    if (stop == nullptr || !stop->stopped()) bendThroughGaps(grid, out.back(), moved[k], max_shift, kGapBendDepth, stop, out);
-    out.push_back(moved[k]);
+    if (!grid.contains(c)) return points;
+  CellPolyline out{points.front()};
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    if (stop == nullptr || !stop->stopped()) bendThroughGaps(grid, out.back(), points[k], max_shift, kGapBendDepth, stop, out);
+    out.push_back(points[k]);
   }
   return out;
 }
