@@ -563,35 +563,6 @@ TEST_F(CliTest, SummaryAndPictureShowTheGridAndTheSmoothedRoute) {
   EXPECT_EQ(smoothed_pixels(tmp("plain.png")), 0);
 }
 
-TEST_F(CliTest, JsonHasTheRouteBentThroughAGapWithCentreGaps) {
-  // A wall down column 5 with a door of rows 3..6 (middle 4.5, resolution 1): the straight route
-  // along row 4 passes the wall end at row 2 at 2, its line bent through the middle at about 2.5.
-  writeFile(tmp("door.txt"),
-            "0 0 0 0 0 1 0 0 0 0 0\n"
-            "0 0 0 0 0 1 0 0 0 0 0\n"
-            "0 0 0 0 0 1 0 0 0 0 0\n"
-            "0 0 0 0 0 0 0 0 0 0 0\n"
-            "0 0 0 0 0 0 0 0 0 0 0\n"
-            "0 0 0 0 0 0 0 0 0 0 0\n"
-            "0 0 0 0 0 0 0 0 0 0 0\n"
-            "0 0 0 0 0 1 0 0 0 0 0\n"
-            "0 0 0 0 0 1 0 0 0 0 0\n");
-  const std::string args = "--map " + quote(tmp("door.txt").string()) +
-                           " --start 4,0 --goal 4,10 --algorithm astar --set smooth_path=true";
-  CliRun r;
-  const json bent = runJson(args + " --set centre_gaps=1", &r);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_DOUBLE_EQ(bent["smoothed_min_clearance_m"].get<double>(), 2.0);
-  ASSERT_EQ(bent["driven_path"].size(), 3u);
-  EXPECT_NEAR(bent["driven_path"][1][0].get<double>(), 4.5, 0.1);  // [row, col]: the door's middle row
-  EXPECT_GT(bent["driven_min_clearance_m"].get<double>(), 2.3);
-  EXPECT_GE(bent["driven_ms"].get<double>(), 0.0);
-  const json straight = runJson(args, &r);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_FALSE(straight.contains("driven_path"));
-  EXPECT_TRUE(straight["driven_min_clearance_m"].is_null());
-}
-
 TEST_F(CliTest, JsonHasClearanceAndMeanCellCost) {
   // A wall along row 0 and one block at (4, 3); A* from (2, 0) to (2, 6) runs straight along
   // row 2: 2 cells from the wall and from the block, resolution 1 (a .txt matrix).
@@ -793,17 +764,6 @@ TEST_F(CliTest, RawMapRoutesAroundAHighCostBand) {
   EXPECT_NEAR(walled["cost"].get<double>(), 4 * std::sqrt(2.0) + 6, 1e-9);
   for (const json& cell : {json::array({0, 2}), json::array({0, 3}), json::array({0, 4})})
     EXPECT_NE(std::find(walled["path"].begin(), walled["path"].end(), cell), walled["path"].end()) << cell.dump();
-
-  EXPECT_EQ(detour["way"], json::array());  // way_cost_factor 0: no way
-
-  // The way by cost_factor 0.1 runs straight through the band (6.4 against the detour's 10.49);
-  // within a row of it cost_factor 3 has no detour: 5 free moves and one of (50 + 3 x 200) / 50.
-  const json within = runJson(common + " --algorithm astar --set way_cost_factor=0.1 --set way_corridor=1", &r);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  ASSERT_EQ(within["way"].size(), 7u);
-  for (const auto& cell : within["way"]) EXPECT_EQ(cell[0], 4);
-  EXPECT_NEAR(within["cost"].get<double>(), 18.0, 1e-9);
-  for (const auto& cell : within["path"]) EXPECT_GE(cell[0], 3);
 
   // EACI finds the detour too (its cost is at most A*'s plus a little on such a small map).
   const json eaci = runJson(common + " --algorithm eaci --seed 3", &r);

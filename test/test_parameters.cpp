@@ -73,8 +73,6 @@ TEST(Parameters, EachBadValueGetsItsOwnReason) {
       {[](auto& p) { p.smooth_tolerance = 1.5; }, "smooth_tolerance"},
       {[](auto& p) { p.round_corners = -1; }, "round_corners must be in 0..4"},
       {[](auto& p) { p.round_corners = 5; }, "round_corners"},
-      {[](auto& p) { p.centre_gaps = -1; }, "centre_gaps must be a number of cells in [0, 4]"},
-      {[](auto& p) { p.centre_gaps = std::nan(""); }, "centre_gaps"},
   };
   for (const auto& c : cases) {
     eaci::Parameters p;
@@ -112,14 +110,7 @@ TEST(Parameters, SetByName) {
   EXPECT_EQ(p.smooth_tolerance, 0.2);
   eaci::setParameter(p, "round_corners", "2");
   EXPECT_EQ(p.round_corners, 2);
-  eaci::setParameter(p, "centre_gaps", "1.5");
-  EXPECT_EQ(p.centre_gaps, 1.5);
-  eaci::setParameter(p, "way_cost_factor", "0.8");
-  EXPECT_EQ(p.way_cost_factor, 0.8);
-  eaci::setParameter(p, "way_corridor", "12");
-  EXPECT_EQ(p.way_corridor, 12);
-  // 24, turn_cost(_unit), smooth_tolerance, round_corners, centre_gaps, way_cost_factor, way_corridor and MAACO's 12
-  EXPECT_EQ(eaci::parameterNames().size(), 43u);
+  EXPECT_EQ(eaci::parameterNames().size(), 40u);  // 24, turn_cost(_unit), smooth_tolerance, round_corners and MAACO's 12
 }
 
 TEST(Parameters, SetByNameRejectsUnknownKeysAndMalformedValues) {

@@ -128,25 +128,4 @@ TEST(PlanImage, SmoothedRouteIsDrawnOverTheGridRoute) {
   EXPECT_EQ(pixelAt(plain.image, plain.map_left + 7 * k + k / 2, plain.map_top + 16 * k + k / 2), grid);
 }
 
-TEST(PlanImage, TheWayIsDrawnUnderTheRoutesWithItsSwatch) {
-  TwoRoutes two;
-  for (int c = 3; c <= 26; ++c) two.result.way.push_back({8, c});  // row 8, apart from both routes up to column 15
-  eaci::tools::PlanDrawing drawing;
-  drawing.map = &two.map;
-  drawing.result = &two.result;
-  drawing.smoothed = true;
-  const eaci::tools::PlanImage picture = eaci::tools::renderPlan(drawing);
-  const int k = picture.cell_pixels;
-  const auto way = eaci::tools::kWayColour;
-  for (int col = 5; col <= 15; ++col)
-    EXPECT_EQ(pixelAt(picture.image, picture.map_left + col * k + k / 2, picture.map_top + 8 * k + k / 2), way)
-        << "col " << col;
-  const int below_map = picture.map_top + two.map.height * k;
-  EXPECT_GE(countColour(picture.image, way, below_map, picture.image.height), 10u);  // its legend swatch
-
-  two.result.way.clear();  // no way (way_cost_factor 0): nothing in its colour
-  const eaci::tools::PlanImage plain = eaci::tools::renderPlan(drawing);
-  EXPECT_EQ(countColour(plain.image, way, 0, plain.image.height), 0u);
-}
-
 }  // namespace

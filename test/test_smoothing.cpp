@@ -359,15 +359,43 @@ TEST(Orientation, ModeNamesAndNumbers) {
   EXPECT_THROW(eaci::orientationModeFromString("sideways"), std::invalid_argument);
 }
 
-TEST(Smoothing, CellMidpointsAlongASegment) {
-  // (0,0) -> (0,3): the stretches inside (0,1), (0,2), (0,3) have their middles at 1/3, 2/3, then the end.
-  const auto ts = eaci::cellMidpointsAlong(Cell{0, 0}, Cell{0, 3});
-  ASSERT_EQ(ts.size(), 3u);
-  EXPECT_NEAR(ts[0], 1.0 / 3, 1e-12);
-  EXPECT_NEAR(ts[1], 2.0 / 3, 1e-12);
-  EXPECT_EQ(ts[2], 1.0);
-  // (0,0) -> (2,2) runs through corners: only (1,1) and (2,2) are crossed.
-  const auto diagonal = eaci::cellMidpointsAlong(Cell{0, 0}, Cell{2, 2});
-  ASSERT_EQ(diagonal.size(), 2u);
-  EXPECT_NEAR(diagonal[0], 0.5, 1e-12);
+// The one segment walk (grid/segment_walk.hpp), by hand: each cell with the length inside it,
+// corners' side cells and the cells beyond an end on a border with 0.
+std::vector<std::pair<Cell, double>> walked(const eaci::CellPoint& from, const eaci::CellPoint& to) {
+  std::vector<std::pair<Cell, double>> cells;
+  eaci::walkSegment(from, to, [&](Cell c, double length) {
+    cells.emplace_back(c, length);
+    return true;
+  });
+  return cells;
+}
+
+TEST(SegmentWalk, EveryCellWithItsLength) {
+  const auto along = walked({0, 0}, {3, 0});  // (row 0, col 0) to (row 0, col 3)
+  ASSERT_EQ(along.size(), 4u);
+  const double along_lengths[] = {0.5, 1, 1, 0.5};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(along[k].first, (Cell{0, k}));
+    EXPECT_NEAR(along[k].second, along_lengths[k], 1e-12) << k;
+  }
+  // The diagonal through two corners: the side cells of each with 0.
+  const auto diagonal = walked({0, 0}, {2, 2});
+  const std::vector<Cell> cells{{0, 0}, {0, 1}, {1, 0}, {1, 1}, {1, 2}, {2, 1}, {2, 2}};
+  const double lengths[] = {M_SQRT1_2, 0, 0, M_SQRT2, 0, 0, M_SQRT1_2};
+  ASSERT_EQ(diagonal.size(), cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    EXPECT_EQ(diagonal[k].first, cells[k]) << k;
+    EXPECT_NEAR(diagonal[k].second, lengths[k], 1e-12) << k;
+  }
+  // Off the centres: an end on a border touches the cell beyond; a start on a border lies in the cell ahead.
+  const auto to_border = walked({0.2, 0}, {0.5, 0});
+  ASSERT_EQ(to_border.size(), 2u);
+  EXPECT_NEAR(to_border[0].second, 0.3, 1e-12);
+  EXPECT_EQ(to_border[1], (std::pair<Cell, double>{Cell{0, 1}, 0.0}));
+  const auto from_border = walked({0.5, 0}, {0.0, 0});
+  ASSERT_EQ(from_border.size(), 1u);
+  EXPECT_EQ(from_border[0].first, (Cell{0, 0}));
+  EXPECT_NEAR(from_border[0].second, 0.5, 1e-12);
+  // One point: its cell, length 0.
+  ASSERT_EQ(walked({1, 1}, {1, 1}).size(), 1u);
 }

@@ -18,7 +18,6 @@
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/end_headings.hpp"
 #include "eaci/grid/grid_view.hpp"
-#include "eaci/grid/way_corridor.hpp"
 #include "eaci/metrics/path_metrics.hpp"
 #include "eaci/path/smoothing.hpp"
 #include "eaci/search/astar.hpp"
@@ -167,9 +166,6 @@ struct PlanResult {
   // With never_worse_than_search: the combined cost of the colony's best route that the
   // search's route replaced; +infinity when none was replaced.
   double colony_combined_cost = std::numeric_limits<double>::infinity();
-  // With way_cost_factor > 0: the way, the cheapest route with cost_factor = way_cost_factor,
-  // within way_corridor cells of which `path` was planned; empty when off.
-  CellPath way;
   long long lost_ants_total = 0;
   std::vector<int> ants_per_iteration;  // m, fewer where stop_gap ended an iteration after a wave of ants
   std::vector<int> lost_ants_per_iteration;
@@ -265,47 +261,6 @@ inline PlanResult planInRouteCells(const CostGrid& grid, Cell start, Cell goal, 
   r.times.search += measured_ms;
   return r;
 }
-
-// way_cost_factor > 0: the way (the exact search with cost_factor = way_cost_factor, turns
-// priced as the plan prices them), then the plan with cost_factor within way_corridor cells of it.
-inline PlanResult planWithinWay(const CostGrid& grid, Cell start, Cell goal, Algorithm algorithm,
-                                const Parameters& params, const PlanOptions& options) {
-  const auto way_start = std::chrono::steady_clock::now();
-  StopPoll poll(options.should_stop, 0);
-  const auto stopped = [&](const char* where) {
-    PlanResult r = failure(algorithm, PlanStatus::kStopped, std::string("stopped (should_stop) ") + where);
-    r.interrupted = true;
-    return r;
-  };
-  if (poll.askNow()) return stopped("before finding the way (way_cost_factor)");
-  Parameters way_params = params;
-  way_params.cost_factor = params.way_cost_factor;
-  way_params.way_cost_factor = 0.0;
-  way_params.smooth_path = false;
-  // Over the heading search's cap, the way is the cheapest route by cost alone (as geodesic
-  // islands do there), not a refusal.
-  if (grid.cellCount() > kMaxHeadingSearchCells) way_params.turn_cost = 0.0;
-  PlanOptions way_options;
-  way_options.should_stop = options.should_stop;
-  way_options.workspace = options.workspace;
-  way_options.end_headings = options.end_headings;
-  PlanResult way = plan(grid, start, goal, Algorithm::kAStar, way_params, way_options);
-  if (way.status == PlanStatus::kStopped) return stopped("while finding the way (way_cost_factor)");
-  if (!way.success()) {  // no route (or a refusal): the plan within it would end the same way
-    way.algorithm = algorithm;
-    return way;
-  }
-  const CostGrid corridor = wayCorridor(grid, way.path, params.way_corridor, &poll);
-  if (poll.stopped()) return stopped("while marking the way's corridor (way_cost_factor)");
-  const double way_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - way_start).count();
-  Parameters within = params;
-  within.way_cost_factor = 0.0;
-  PlanResult r = plan(corridor, start, goal, algorithm, within, options);
-  r.way = std::move(way.path);
-  r.times.search += way_ms;
-  return r;
-}
 }  // namespace detail
 
 // The move cost rule the parameters ask for.
@@ -351,8 +306,6 @@ inline PlanResult plan(const CostGrid& grid, Cell start, Cell goal, Algorithm al
     return failure(algorithm, PlanStatus::kInvalidMap, e.str());
   }
 
-  if (params.way_cost_factor > 0 && !(start == goal))
-    return detail::planWithinWay(grid, start, goal, algorithm, params, options);
   if (params.turn_cost > 0 && params.turn_cost_unit == TurnCostUnit::kRouteCell && !(start == goal))
     return detail::planInRouteCells(grid, start, goal, algorithm, params, options);
 

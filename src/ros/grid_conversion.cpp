@@ -12,7 +12,6 @@
 #include <limits>
 
 #include "eaci/grid/distance_transform.hpp"
-#include "eaci/path/smoothing.hpp"
 
 namespace eaci_ros {
 
@@ -83,56 +82,15 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
   return eaci::inflatedCosts(view, grid.info.resolution, inflation);
 }
 
-nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
-                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp, eaci::OrientationMode orientation,
-                      const std::optional<Eigen::Vector2d>& past_goal,
-                      const std::vector<Eigen::Vector2d>& start_turn) {
-  return toPath(eaci::cellPolyline(cells), frame, start, goal, stamp, orientation, past_goal, start_turn);
-}
-
-nav_msgs::Path toPath(const eaci::CellPolyline& corners, const TfMapFrame& frame,
+nav_msgs::Path toPath(const std::vector<Eigen::Vector2d>& points, const std::string& frame_id,
                       const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-                      const ros::Time& stamp, eaci::OrientationMode orientation,
-                      const std::optional<Eigen::Vector2d>& past_goal,
-                      const std::vector<Eigen::Vector2d>& start_turn) {
+                      const ros::Time& stamp, eaci::OrientationMode orientation) {
   nav_msgs::Path path;
-  path.header.frame_id = frame.frame_id;
+  path.header.frame_id = frame_id;
   path.header.stamp = stamp;
-  if (corners.empty()) return path;
-  // The corners; along a smoothed route's long segments, a pose in every cell crossed (between
-  // two cell centres, the middle of each cell's stretch; off the centres, every cell of length).
-  const auto on_centre = [](const eaci::CellPoint& p) { return p == eaci::cellPoint(eaci::cellOfPoint(p)); };
-  std::vector<Eigen::Vector2d> points{frame.pointToWorld(corners.front())};
-  for (std::size_t k = 1; k < corners.size(); ++k) {
-    const Eigen::Vector2d a = frame.pointToWorld(corners[k - 1]), b = frame.pointToWorld(corners[k]);
-    if (on_centre(corners[k - 1]) && on_centre(corners[k])) {
-      const eaci::Cell from = eaci::cellOfPoint(corners[k - 1]), to = eaci::cellOfPoint(corners[k]);
-      if (eaci::directionBetween(from, to) >= 0) {
-        points.push_back(b);
-        continue;
-      }
-      for (double t : eaci::cellMidpointsAlong(from, to)) points.push_back(a + t * (b - a));
-      continue;
-    }
-    const int pieces = std::max(1, static_cast<int>(std::ceil((corners[k] - corners[k - 1]).norm())));
-    for (int i = 1; i <= pieces; ++i) points.push_back(a + (b - a) * (static_cast<double>(i) / pieces));
-  }
-  points.front() = {start.pose.position.x, start.pose.position.y};
-  if (points.size() > 1) points.back() = {goal.pose.position.x, goal.pose.position.y};
-  if (!start_turn.empty() && points.size() > 1) {
-    // The arc round the robot, then the route from where it leaves the arc's circle.
-    const Eigen::Vector2d origin = points.front();
-    const double radius = (start_turn.back() - origin).norm();
-    std::size_t first_beyond = 1;
-    while (first_beyond + 1 < points.size() && (points[first_beyond] - origin).norm() <= radius) ++first_beyond;
-    points.erase(points.begin() + 1, points.begin() + static_cast<std::ptrdiff_t>(first_beyond));
-    points.insert(points.begin() + 1, start_turn.begin(), start_turn.end());
-  }
-  const bool runs_past = past_goal && points.size() > 1;
-  if (runs_past) points.insert(points.end() - 1, *past_goal);
-  std::vector<double> headings =
+  if (points.empty()) return path;
+  const std::vector<double> headings =
       eaci::orientPoints(points, tf2::getYaw(start.pose.orientation), tf2::getYaw(goal.pose.orientation), orientation);
-  if (runs_past) headings[points.size() - 2] = headings[points.size() - 3];  // on along the route, not back
   for (std::size_t k = 0; k < points.size(); ++k) {
     geometry_msgs::PoseStamped pose;
     pose.header = path.header;

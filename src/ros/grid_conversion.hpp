@@ -49,23 +49,13 @@ void inflateObstacles(nav_msgs::OccupancyGrid& grid, double radius, int occupied
 std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, int occupied_threshold,
                                           const eaci::InflationParameters& inflation);
 
-// The route as poses in the map frame: the start pose's position first, cell centres (with
-// extra poses along long straight segments of a smoothed route), the goal pose (position and
-// orientation) last; headings as global_planner's orientation_mode sets them (default
-// forward: each pose faces the next one). With `past_goal` (run_past_goal) a pose there comes
-// just before the goal's, facing the way the route arrives.
-nav_msgs::Path toPath(const eaci::CellPath& cells, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
-                      const geometry_msgs::PoseStamped& goal, const ros::Time& stamp,
-                      eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
-                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt,
-                      const std::vector<Eigen::Vector2d>& start_turn = {});
-// The same through corners off the cell centres (PlanReply::driven: lines bent through gaps,
-// eaci/path/gap_centring.hpp), a pose every cell of length along their segments.
-nav_msgs::Path toPath(const eaci::CellPolyline& corners, const TfMapFrame& frame,
+// The poses a plan sends (PlanReply::poses: positions in the map frame, checked by the planning
+// service) as a nav_msgs/Path in `frame_id`: headings as global_planner's orientation_mode sets
+// them (default forward: each pose faces the next one), the last pose with the goal's
+// orientation exactly.
+nav_msgs::Path toPath(const std::vector<Eigen::Vector2d>& points, const std::string& frame_id,
                       const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
-                      const ros::Time& stamp, eaci::OrientationMode orientation = eaci::OrientationMode::kForward,
-                      const std::optional<Eigen::Vector2d>& past_goal = std::nullopt,
-                      const std::vector<Eigen::Vector2d>& start_turn = {});
+                      const ros::Time& stamp, eaci::OrientationMode orientation = eaci::OrientationMode::kForward);
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);

@@ -9,9 +9,9 @@ std::uint32_t mbfOutcome(eaci_service::PlanOutcome outcome) noexcept {
   using Result = mbf_msgs::GetPathResult;
   switch (outcome) {
     case PlanOutcome::kOk: return Result::SUCCESS;
-    case PlanOutcome::kStartOffMap: return Result::OUT_OF_MAP;  // as ExePath's: the robot is off the map
+    case PlanOutcome::kStartOffMap: return Result::OUT_OF_MAP;
+    case PlanOutcome::kGoalOffMap: return Result::OUT_OF_MAP;  // as global_planner's and navfn's MBF wrappers
     case PlanOutcome::kStartBlocked: return Result::INVALID_START;
-    case PlanOutcome::kGoalOffMap: return kMbfGoalOffMap;
     case PlanOutcome::kGoalBlocked: return Result::INVALID_GOAL;
     case PlanOutcome::kNoPath: return Result::NO_PATH_FOUND;
     case PlanOutcome::kTimeLimit: return Result::PAT_EXCEEDED;  // the planner's own max_planning_time

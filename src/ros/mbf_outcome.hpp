@@ -9,12 +9,12 @@
 
 namespace eaci_ros {
 
-// Plugin-specific codes (mbf_msgs/GetPath reserves 71..99 for them) where MBF 0.4 has no name.
-constexpr std::uint32_t kMbfGoalOffMap = 71;      // the goal lies off the costmap
+// A plugin-specific code (mbf_msgs/GetPath reserves 71..99 for them) where MBF 0.4 has no name.
 constexpr std::uint32_t kMbfBadParameters = 72;   // the planner's parameters in force are refused
 
-// SUCCESS for kOk; every failure its own code (named mbf_msgs::GetPathResult constants, or the
-// two above): start off the map OUT_OF_MAP, start blocked INVALID_START, goal off the map 71,
+// SUCCESS for kOk; every failure a code of its own (named mbf_msgs::GetPathResult constants, or
+// the one above) but the two ends off the map, both OUT_OF_MAP as MBF's own planners give them
+// (the message names which): start blocked INVALID_START,
 // goal blocked INVALID_GOAL, no path NO_PATH_FOUND, time limit PAT_EXCEEDED, cancelled
 // CANCELED, shutdown STOPPED, bad parameters 72, not initialised NOT_INITIALIZED, bad costmap
 // MAP_ERROR, internal error (and any value outside the enum) INTERNAL_ERROR.

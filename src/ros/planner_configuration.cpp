@@ -84,11 +84,8 @@ PlannerConfiguration::PlannerConfiguration(const ros::NodeHandle& nh, std::strin
       if (start_error_.empty()) start_error_ = key + std::string(e.what()).substr(leadingName(e.what()).size());
     }
   }
-  if (params_.allow_corner_cutting) {
-    ROS_WARN("%s: allow_corner_cutting is for the paper's benchmark only; a robot never cuts corners: ignored",
-             who_.c_str());
-    params_.allow_corner_cutting = false;
-  }
+  for (const auto& [name, reason] : unreadParameters())
+    if (nh.hasParam(name)) ROS_WARN("%s: %s is not read here (%s): ignored", who_.c_str(), name.c_str(), reason.c_str());
   if (start_error_.empty()) start_error_ = rosValidationError(params_, options_);
   start_parameter_ = leadingName(start_error_);
   if (start_parameter_ == "obstacle_cost") start_parameter_ = "lethal_cost";

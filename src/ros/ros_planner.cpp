@@ -49,7 +49,9 @@ RosPlanner::RosPlanner(const ros::NodeHandle& private_nh, Setup setup) : setup_(
   private_nh.param("save_costmap_on_failure", settings.save_costmap_on_failure, false);
   private_nh.param("save_costmap_keep", settings.save_costmap_keep, 10);
   settings.shutting_down = [] { return !ros::ok() || ros::isShuttingDown(); };
-  settings.stand_in_for_emptied_costmaps = setup_.from_costmap_2d;
+  // ~stand_in_for_emptied_costmaps: plan on the last filled costmap while costmap_2d refills one it resized.
+  settings.stand_in_for_emptied_costmaps =
+      setup_.from_costmap_2d && private_nh.param("stand_in_for_emptied_costmaps", true);
   service_ = std::make_unique<PlanningService>(std::move(settings), &logLine);
   config_ = std::make_unique<PlannerConfiguration>(
       private_nh, setup_.who,
@@ -143,6 +145,7 @@ RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, con
       if (setup_.borrow) {
         reply = setup_.borrow([&](const CostmapView& costmap, const CostmapChanges& changes) {
           refused = frameRefusal(setup_.who, start, goal, costmap.frame_id);
+          if (refused) service_->changesNotRead();  // taken from the tracker, not read: read them next time
           return refused ? PlanReply{} : service_->plan(costmap, request, changes);
         });
       } else {
@@ -183,11 +186,8 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   target.pose.position.x = reply.goal.x();
   target.pose.position.y = reply.goal.y();
   const TfMapFrame frame = rosFrame(reply);
-  // The route bent through the gaps (PlanReply::driven), or the smoothed route's cells.
-  const eaci::CellPolyline corners =
-      reply.driven.empty() ? eaci::cellPolyline(reply.result.smoothed_path) : reply.driven;
-  const nav_msgs::Path path = toPath(corners, frame, start, target, ros::Time::now(), reply.options.orientation_mode,
-                                     reply.past_goal, reply.start_turn);
+  const nav_msgs::Path path =
+      toPath(reply.poses, frame.frame_id, start, target, ros::Time::now(), reply.options.orientation_mode);
   plan = path.poses;
   const double convert_ms = msSince(convert_start);
   const auto publish_start = std::chrono::steady_clock::now();
@@ -195,12 +195,13 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
   logProfile(setup_.who, reply, convert_ms, msSince(publish_start), entered);
   answer.cost = reply.result.cost;
-  char line[192];
-  std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s%s",
+  char line[256];
+  std::snprintf(line, sizeof(line), "a route of %.2f m (%zu poses, cost %.1f) after %d iterations%s%s%s%s",
                 reply.result.smoothed_length * reply.frame.resolution, plan.size(), reply.result.cost,
                 reply.result.iterations_run, reply.stopped_by == StopReason::kNone ? "" : ", the best so far: ",
                 reply.stopped_by == StopReason::kNone ? "" : toString(reply.stopped_by),
-                reply.kept_previous_route ? "; the route sent last kept (route_hysteresis)" : "");
+                reply.sent_grid_route ? "; the grid route (the smoothed one failed the check)" : "",
+                reply.stood_in_for_emptied ? "; on the last filled costmap (this one was resized and is empty)" : "");
   answer.message = line;
   return answer;
 }

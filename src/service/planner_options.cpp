@@ -1,5 +1,6 @@
 #include "planner_options.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -17,8 +18,12 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
   static const std::map<std::string, eaci::detail::FieldAccess<Options>> table = {
       {"algorithm",
        {[](Options& o, const std::string& v) {
-          if (!eaci::parseAlgorithm(v, o.algorithm))
-            throw eaci::ParameterError("algorithm must be eaci, aco, maaco or astar (got '" + v + "')");
+          eaci::Algorithm algorithm = eaci::Algorithm::kEaci;
+          if (!eaci::parseAlgorithm(v, algorithm) ||
+              (algorithm != eaci::Algorithm::kEaci && algorithm != eaci::Algorithm::kAStar))
+            throw eaci::ParameterError("algorithm must be eaci or astar (got '" + v +
+                                       "'; the paper's aco and maaco baselines run in eaci_plan and eaci_bench)");
+          o.algorithm = algorithm;
         },
         [](const Options& o) { return ParameterValue{std::string(eaci::toString(o.algorithm))}; }}},
       {"default_tolerance", fieldAccess<Options>("default_tolerance", &Options::default_tolerance)},
@@ -30,10 +35,6 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
       {"inflation_radius", fieldAccess<Options>("inflation_radius", &Options::inflation_radius)},
       {"cost_scaling_factor", fieldAccess<Options>("cost_scaling_factor", &Options::cost_scaling_factor)},
       {"landmarks", fieldAccess<Options>("landmarks", &Options::landmarks)},
-      {"route_hysteresis", fieldAccess<Options>("route_hysteresis", &Options::route_hysteresis)},
-      {"price_goal_heading", fieldAccess<Options>("price_goal_heading", &Options::price_goal_heading)},
-      {"run_past_goal", fieldAccess<Options>("run_past_goal", &Options::run_past_goal)},
-      {"lead_start_turn", fieldAccess<Options>("lead_start_turn", &Options::lead_start_turn)},
       {"orientation_mode",
        {[](Options& o, const std::string& v) {
           try {
@@ -69,10 +70,57 @@ std::string robotDefaultsSummary() {
   return summary;
 }
 
-std::vector<std::string> rosParameterNames() {
-  std::vector<std::string> names = eaci::parameterNames();
-  for (const auto& entry : optionTable()) names.push_back(entry.first);
+const std::vector<std::string>& robotParameterNames() {
+  static const std::vector<std::string> names = {
+      "algorithm",    "default_tolerance", "allow_unknown", "neutral_cost", "cost_factor",  "lethal_cost",
+      "turn_cost",    "smooth_path",       "max_planning_time", "orientation_mode", "publish_plan",
+      "visualize_pheromone"};
   return names;
+}
+
+const std::vector<std::string>& colonyParameterNames() {
+  static const std::vector<std::string> names = {
+      "ants",    "max_iterations", "alpha",          "beta",          "q",
+      "kappa",   "islands",        "lambda",         "epsilon",       "island_strategy",
+      "island_spacing_max", "region_margin", "early_stop_iterations", "stop_gap", "seed", "threads"};
+  return names;
+}
+
+std::vector<std::string> rosParameterNames() {
+  std::vector<std::string> names = robotParameterNames();
+  names.insert(names.end(), colonyParameterNames().begin(), colonyParameterNames().end());
+  for (const char* at_start : {"occupied_threshold", "robot_radius", "inflation_radius", "cost_scaling_factor", "landmarks"})
+    names.emplace_back(at_start);
+  return names;
+}
+
+namespace {
+
+const std::map<std::string, std::string>& droppedOptions() {
+  static const std::map<std::string, std::string> dropped = {
+      {"route_hysteresis", "dropped: it bought no arrival time in any drive"},
+      {"price_goal_heading", "dropped: with turn_cost > 0 the turn onto the goal's heading is always priced"},
+      {"run_past_goal", "dropped: a controller's approach to the goal is the controller's to tune"},
+      {"lead_start_turn", "dropped: which way a controller turns is the controller's to tune"},
+      {"centre_gaps", "dropped: it moved one door's clearance by millimetres"},
+      {"way_cost_factor", "dropped: it moved one goal of one map"},
+      {"way_corridor", "dropped with way_cost_factor"},
+  };
+  return dropped;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> unreadParameters() {
+  std::vector<std::pair<std::string, std::string>> unread(droppedOptions().begin(), droppedOptions().end());
+  const auto ros = rosParameterNames();
+  for (const std::string& name : eaci::parameterNames()) {
+    if (std::find(ros.begin(), ros.end(), name) != ros.end()) continue;
+    unread.emplace_back(name, name == "allow_corner_cutting"
+                                  ? "a robot never cuts corners (the paper's benchmarks only)"
+                                  : "a parameter of the command-line planner and the benchmarks only");
+  }
+  return unread;
 }
 
 void setRosParameter(eaci::Parameters& params, RosPlannerOptions& options, const std::string& name,
@@ -123,19 +171,12 @@ std::string rosValidationError(const eaci::Parameters& params, const RosPlannerO
       << options.robot_radius << ")";
   else if (!std::isfinite(options.cost_scaling_factor) || options.cost_scaling_factor < 0)
     e << "cost_scaling_factor must be >= 0 (got " << options.cost_scaling_factor << ")";
-  else if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0)
-    e << "max_planning_time must be >= 0 seconds, 0 = no limit (got " << options.max_planning_time << ")";
+  else if (!std::isfinite(options.max_planning_time) || options.max_planning_time < 0 ||
+           options.max_planning_time > kMaxPlanningTime)
+    e << "max_planning_time must be in [0, " << kMaxPlanningTime << "] seconds, 0 = no limit (got "
+      << options.max_planning_time << ")";
   else if (options.landmarks < 0 || options.landmarks > 64)
     e << "landmarks must be in 0..64, 0 = none (got " << options.landmarks << ")";
-  else if (!std::isfinite(options.route_hysteresis) || options.route_hysteresis < 0 || options.route_hysteresis > 1)
-    e << "route_hysteresis must be in [0, 1], the fraction by which a replan's route must be cheaper than the "
-         "route sent last to replace it, 0 = off (got " << options.route_hysteresis << ")";
-  else if (!std::isfinite(options.run_past_goal) || options.run_past_goal < 0 || options.run_past_goal > 0.5)
-    e << "run_past_goal must be in [0, 0.5] m, how far the plan runs on past the goal before it ends there, "
-         "0 = off (got " << options.run_past_goal << ")";
-  else if (!std::isfinite(options.lead_start_turn) || options.lead_start_turn < 0 || options.lead_start_turn > 0.5)
-    e << "lead_start_turn must be in [0, 0.5] m, the radius of the arc a plan that leaves behind the robot "
-         "begins with (dwa_local_planner's forward_point_distance), 0 = off (got " << options.lead_start_turn << ")";
   return e.str();
 }
 

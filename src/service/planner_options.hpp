@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eaci/planner/parameters.hpp"
@@ -13,11 +14,12 @@
 namespace eaci_service {
 
 struct RosPlannerOptions {
-  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | aco | maaco | astar
+  eaci::Algorithm algorithm = eaci::Algorithm::kEaci;  // ~algorithm: eaci | astar (the paper's baselines: the CLI)
   double default_tolerance = 0.0;   // m: the route ends on the cell nearest the goal within it that the start can reach
   int occupied_threshold = 65;      // nav_msgs/OccupancyGrid value (0..100) at or above which a cell is an obstacle
   bool publish_plan = true;
-  double max_planning_time = 1.0;   // s; the best route so far is returned when it runs out; 0 = no limit
+  double max_planning_time = 1.0;   // s, at most kMaxPlanningTime; the best route so far is returned when it
+                                    // runs out; 0 = no limit
                                     // (move_base holds its costmap lock around the plan)
   bool visualize_pheromone = false; // publish the final pheromone as a nav_msgs/OccupancyGrid
   double robot_radius = 0.0;        // m, planner node only: obstacles grow by it (the plugin has the costmap's inflation)
@@ -30,29 +32,6 @@ struct RosPlannerOptions {
   // Landmarks kept for the island route's search on maps from 256 x 256 cells (eaci::LandmarkCache):
   // made in the background after the first plan on a costmap, 4 bytes a cell each; 0 = none.
   int landmarks = 4;
-  // A replan to the same goal (the same cell, the same costmap frame and configuration) keeps
-  // the route sent last, rejoined from the robot's cell, while it costs at most (1 + this) x
-  // the new route by the planner's measure (eaci/path/route_hysteresis.hpp): successive plans
-  // do not swap between routes of nearly equal cost. 0 = every plan sends its own route.
-  double route_hysteresis = 0.0;
-  // With turn_cost > 0, a route also pays turn_cost x the turn from its last move onto the
-  // goal's heading (eaci::EndHeadings; the heading orientation_mode drives along, travelHeading):
-  // it arrives lined up with the goal where the costs are close, and the smoother keeps the
-  // leg it arrives along. A goal whose quaternion is not a rotation (all zeros) has no heading.
-  // The robot's own heading is not priced: on replans while the car drives, a priced start
-  // heading kept the route going straight on past a bend it should have started to take
-  // (docs/ros.md, "Arriving lined up"). false: the goal turns nothing.
-  bool price_goal_heading = true;
-  // m: the plan runs this far on past the goal along the way it arrives, then ends at the goal
-  // pose (src/service/past_goal.hpp): dwa_local_planner keeps the car's speed until it is
-  // within xy_goal_tolerance of the goal instead of crawling the last decimetres. Only through
-  // cells the route could enter; 0 = the plan ends at the goal. In [0, 0.5].
-  double run_past_goal = 0.0;
-  // m: a plan whose route leaves more than 90 deg off the robot's heading begins with an arc of
-  // this radius round the robot, from its heading the shorter way onto the route's
-  // (src/service/start_turn.hpp): dwa_local_planner's nose point follows it and the robot turns
-  // in place the short way round. Set it to dwa's forward_point_distance. 0 = off. In [0, 0.5].
-  double lead_start_turn = 0.0;
 };
 
 // The core parameters a robot plans with when its configuration sets none (the move_base
@@ -73,8 +52,22 @@ eaci::Parameters rosDefaultParameters();
 // as "name value" pairs, for the start-up log line.
 std::string robotDefaultsSummary();
 
-// Every name a ROS planner reads: the core's table (eaci::parameterNames()) and the options above.
+// The longest max_planning_time, s (a plan's deadline must fit the steady clock).
+constexpr double kMaxPlanningTime = 3600.0;
+
+// Every name a ROS planner reads: the robot's parameters (robotParameterNames), the colony's
+// research parameters (colonyParameterNames), and the options set at start (occupied_threshold,
+// robot_radius, inflation_radius, cost_scaling_factor, landmarks). The core's other parameters
+// (the ACO and MAACO baselines', smooth_tolerance, round_corners, turn_cost_unit,
+// allow_corner_cutting) are the CLI's and the benchmarks' only.
 std::vector<std::string> rosParameterNames();
+// What a builder sets for a robot (dynamic_reconfigure's first group).
+const std::vector<std::string>& robotParameterNames();
+// The colony's own parameters (its research group): on a robot they change only how long a plan takes.
+const std::vector<std::string>& colonyParameterNames();
+// Names a ROS planner does not read but a configuration may still hold (the core's other
+// parameters, options of earlier versions), each with the reason: said at start when set.
+std::vector<std::pair<std::string, std::string>> unreadParameters();
 
 // Sets one core parameter (eaci::setParameter) or ROS option by name from its text form.
 // Throws eaci::ParameterError with a sentence starting with the name for an unknown name or a

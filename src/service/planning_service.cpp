@@ -10,13 +10,10 @@
 #include <utility>
 
 #include "eaci/grid/nearest_free.hpp"
-#include "eaci/path/gap_centring.hpp"
-#include "eaci/path/route_hysteresis.hpp"
 #include "eaci/search/nearest_reachable.hpp"
 #include "eaci/io/text.hpp"
-#include "past_goal.hpp"
-#include "start_turn.hpp"
 #include "route_defect.hpp"
+#include "route_finish.hpp"
 #include "start_cell.hpp"
 
 namespace eaci_service {
@@ -24,11 +21,6 @@ namespace {
 
 std::string where(const Eigen::Vector2d& p) {
   return "(" + eaci::formatNumber(p.x(), 3) + ", " + eaci::formatNumber(p.y(), 3) + ")";
-}
-
-// A route is kept across plans only on the same costmap frame (a rolling window moves it).
-bool sameFrame(const eaci::MapFrame& a, const eaci::MapFrame& b) {
-  return a.width == b.width && a.height == b.height && a.resolution == b.resolution && a.origin == b.origin;
 }
 
 std::string sizeOf(const eaci::MapFrame& frame) {
@@ -81,8 +73,8 @@ PlanOutcome stoppedOutcome(StopReason reason) {
 PlanningService::PlanningService(ServiceSettings settings, Logger log)
     : settings_(std::move(settings)),
       log_(std::move(log)),
-      emptied_stand_in_(std::chrono::duration_cast<EmptiedCostmapStandIn::Clock::duration>(
-          std::chrono::duration<double>(std::max(0.0, settings_.emptied_costmap_wait)))) {
+      source_({settings_.stand_in_for_emptied_costmaps, settings_.stand_in_max_age},
+              [this](const std::string& line, bool warn) { say(warn ? LogLevel::kWarn : LogLevel::kInfo, line); }) {
   config_.params = rosDefaultParameters();
   writer_ = std::make_unique<ReplayWriter>(settings_.save_costmap_dir, settings_.save_costmap_keep,
                                            [this](const std::string& line, bool ok) {
@@ -142,7 +134,7 @@ std::string describePhases(const PlanPhases& p) {
                      ", search " + ms(p.core.search) + ", colony " + ms(p.core.colony) + ", smoothing " +
                      ms(p.core.smoothing);
   if (p.tolerance > 0) line += ", tolerance " + ms(p.tolerance);
-  return line + ", check " + ms(p.check);
+  return line + ", finish " + ms(p.finish);
 }
 
 PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& request,
@@ -160,6 +152,7 @@ PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& r
   try {
     const Configuration config = configuration();
     if (!config.error.empty()) {
+      source_.changesNotRead();
       reply.outcome = PlanOutcome::kBadParameters;
       reply.error = config.error + ": refusing to plan until it is fixed";
       return reply;
@@ -189,6 +182,7 @@ PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& r
         turn_free_.wait(lock, free);
       } else if (!turn_free_.wait_until(lock, deadline, free)) {
         lock.unlock();
+        source_.changesNotRead();
         reply.outcome = PlanOutcome::kTimeLimit;
         reply.error = "another plan held the planner for the whole max_planning_time (" + eaci::formatNumber(limit) + " s)";
         return reply;
@@ -214,10 +208,13 @@ PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& r
     reply.phases.wait = waited;
     reply.phases.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   } catch (const std::bad_alloc&) {
+    source_.changesNotRead();
     fail("out of memory while planning (std::bad_alloc): no plan; the planner's buffers are made afresh for the next one");
   } catch (const std::exception& e) {
+    source_.changesNotRead();
     fail(std::string("planning failed: ") + e.what());
   } catch (...) {
+    source_.changesNotRead();
     fail("planning failed with an unknown exception");
   }
   return reply;
@@ -234,10 +231,7 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     phase_start = now;
   };
   if (workspace_suspect_ || !workspace_) {
-    mirror_.clear();  // a plan that threw may have left it half made
-    stood_in_.clear();
-    mirror_filled_ = false;
-    mirror_missed_changes_ = false;
+    source_.clear();  // a plan that threw may have left its copy half made
     workspace_suspect_ = false;
     // Its destructor joins the colony's and the search's worker threads, which a loaded machine
     // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
@@ -281,8 +275,9 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
     }
     return done;
   };
+  bool changes_read = false;
   const auto failure = [&](PlanOutcome outcome, const std::string& why) -> PlanReply {
-    sent_route_.reset();
+    if (!changes_read) source_.changesNotRead();
     reply.outcome = outcome;
     reply.error = why;
     return finish(reply);
@@ -312,32 +307,16 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   interpretation.unknown_value = kCostmapUnknown;
 
   // The planner's copy of the costmap, brought up to it where it changed; or, for a costmap
-  // costmap_2d has emptied, the last filled one placed into its frame (a copy made afresh).
-  std::optional<CostmapSnapshot> placed;
-  if (settings_.stand_in_for_emptied_costmaps && !rolling_) {
-    std::string stood_in;
-    placed = emptied_stand_in_.standIn(costmap, mirror_filled_ ? &mirror_.costmap() : nullptr, Clock::now(), stood_in);
-    if (!stood_in.empty() && stood_in != emptied_reported_) say(LogLevel::kInfo, stood_in);
-    emptied_reported_ = stood_in;
-  }
-  CostmapMirror& mirror = placed ? stood_in_ : mirror_;
-  const CostmapMirror::Sync synced =
-      placed ? stood_in_.sync(CostmapView::of(*placed), CostmapChanges::unknown(), interpretation,
-                              params.allow_corner_cutting, eaci::costRule(params))
-             : mirror_.sync(costmap, mirror_missed_changes_ || distrust_changes_ ? CostmapChanges::unknown() : changes,
-                            interpretation, params.allow_corner_cutting, eaci::costRule(params));
-  if (synced.rows_missed > 0 && !distrust_changes_) {
-    distrust_changes_ = true;
-    say(LogLevel::kWarn, "the costmap changed in " + std::to_string(synced.rows_missed) +
-                             " rows its change tracker did not report: from now on every plan compares every row of it");
-  }
-  // A plan on the stand-in leaves mirror_ behind the changes the caller reported: the next sync compares every row.
-  mirror_missed_changes_ = placed.has_value();
-  if (!placed) mirror_filled_ = emptied_stand_in_.lastWasFilled();  // only read when the stand-in is asked
+  // costmap_2d has emptied by a resize, the last filled one placed into its frame.
+  const CostmapSource::Read read = source_.read(costmap, changes, interpretation, params.allow_corner_cutting,
+                                                eaci::costRule(params), rolling_, Clock::now());
+  changes_read = true;
+  CostmapMirror& mirror = *read.mirror;
   planned_on = &mirror;
-  reply.phases.afresh = synced.afresh;
-  reply.phases.rows_read = synced.rows_read;
-  reply.phases.rows_changed = synced.rows_changed;
+  reply.stood_in_for_emptied = read.stood_in;
+  reply.phases.afresh = read.synced.afresh;
+  reply.phases.rows_read = read.synced.rows_read;
+  reply.phases.rows_changed = read.synced.rows_changed;
   phaseDone(reply.phases.costmap);
 
   const auto start_cell = frame.worldToCell(request.start);
@@ -385,8 +364,9 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop](int) { return should_stop(); };
   plan_options.never_worse_than_search = true;  // a lucky ant's detour never reaches the robot
-  if (options.price_goal_heading)  // grid angles are the costmap frame's yaws (y up the rows)
-    plan_options.end_headings.goal = eaci::travelHeading(request.goal_yaw, options.orientation_mode);
+  // With turn_cost > 0 the turn onto the goal's heading is priced too (grid angles are the
+  // costmap frame's yaws, y up the rows); the robot's own heading is not (docs/ros.md).
+  plan_options.end_headings.goal = eaci::travelHeading(request.goal_yaw, options.orientation_mode);
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
   const eaci::CostGrid& grid = mirror.grid();
   reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
@@ -424,26 +404,24 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target, params.allow_corner_cutting);
   if (!defect.empty())
     return failure(PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan");
-  // The route that goes out is result.smoothed_path: walked through every cell its segments
-  // pass; if the smoother got one wrong, the grid route (just checked) goes out instead.
+  if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
+  // What goes out: the smoothed route's poses, every segment between two of them checked; if
+  // the smoother got one wrong, the grid route's (just checked cell by cell).
   if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
-  const std::string smoothed_defect =
-      drivableRouteDefect(view, reply.result.smoothed_path, *start_cell, *target, params.allow_corner_cutting);
-  if (!smoothed_defect.empty()) {
-    say(LogLevel::kWarn, "the smoothed route is not drivable (" + smoothed_defect + "): sending the grid route instead");
+  const FinishedRoute finished = finishRoute(view, frame, reply.result.smoothed_path, reply.result.path, request.start,
+                                             reply.goal, params.allow_corner_cutting, settings_.poses_hook);
+  phaseDone(reply.phases.finish);
+  if (finished.poses.empty())
+    return failure(PlanOutcome::kInternalError, "internal error: no route's poses pass the last check (" +
+                                                    finished.defect + "); no plan");
+  if (finished.grid_route) {
+    say(LogLevel::kWarn, "the smoothed route's poses are not drivable (" + finished.smoothed_defect +
+                             "): sending the grid route's instead");
     reply.result.smoothed_path = reply.result.path;
     reply.result.smoothed_length = reply.result.length;
   }
-  keepSentRouteIfClose(reply, grid, view, *start_cell, *target, config, plan_options.end_headings);
-  // On the costmap's own grid, not the way's corridor the route was smoothed in (its border is no wall).
-  eaci::StopPoll centring_poll(should_stop);
-  reply.driven = eaci::centreInGaps(grid, reply.result.smoothed_path, params.smooth_path ? params.centre_gaps : 0.0,
-                                    &centring_poll);
-  phaseDone(reply.phases.check);
-  if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
-  reply.past_goal = pointPastGoal(view, frame, reply.result.smoothed_path, reply.goal, options.run_past_goal);
-  reply.start_turn = startTurnArc(view, frame, reply.result.smoothed_path, request.start, request.start_yaw,
-                                  options.lead_start_turn);
+  reply.poses = finished.poses;
+  reply.sent_grid_route = finished.grid_route;
   const bool colony_replaced = std::isfinite(reply.result.colony_combined_cost);
   if (colony_replaced)
     say(LogLevel::kInfo, "the colony's best route scored " + eaci::formatNumber(reply.result.colony_combined_cost) +
@@ -456,28 +434,6 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
                                                 : "the cheapest route the islands sit on (no ant had arrived yet)"));
   reply.outcome = PlanOutcome::kOk;
   return finish(reply);
-}
-
-void PlanningService::keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view,
-                                           eaci::Cell start, eaci::Cell target, const Configuration& config,
-                                           const eaci::EndHeadings& ends) {
-  const eaci::MapFrame& frame = reply.frame;
-  const double hysteresis = config.options.route_hysteresis;
-  if (hysteresis > 0 && sent_route_ && sent_route_->generation == config.generation && sent_route_->target == target &&
-      sameFrame(sent_route_->frame, frame)) {
-    const eaci::CellPath kept = eaci::rejoinRoute(sent_route_->corners, start, kRejoinDistance / frame.resolution);
-    if (!kept.empty() &&
-        drivableRouteDefect(view, kept, start, target, config.params.allow_corner_cutting).empty()) {
-      const double kept_cost = eaci::polylineObjective(grid, kept, reply.result.turn_price, ends);
-      const double new_cost = eaci::polylineObjective(grid, reply.result.smoothed_path, reply.result.turn_price, ends);
-      if (kept_cost <= new_cost * (1.0 + hysteresis)) {
-        reply.result.smoothed_path = kept;
-        reply.result.smoothed_length = eaci::pathLength(kept);
-        reply.kept_previous_route = true;
-      }
-    }
-  }
-  sent_route_ = SentRoute{frame, target, reply.result.smoothed_path, config.generation};
 }
 
 void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested) {

@@ -28,7 +28,7 @@
 
 #include "costmap_mirror.hpp"
 #include "costmap_replay.hpp"
-#include "costmap_reset.hpp"
+#include "costmap_source.hpp"
 #include "costmap_snapshot.hpp"
 #include "costmap_view.hpp"
 #include "eaci/planner.hpp"
@@ -57,16 +57,18 @@ struct ServiceSettings {
   bool save_costmap_on_failure = false;  // save the costmap of every failed plan, off the planning thread
   int save_costmap_keep = 10;            // newest replays kept per kind (0 = all)
   std::function<bool()> shutting_down;   // e.g. !ros::ok(); asked like the time limit
-  // Tests only: changes result.smoothed_path before the last check of the route that goes out
-  // (a seam to inject a smoother's defect); empty in the plugin and the node.
+  // Tests only: change result.smoothed_path, and the poses made from it, before the check of
+  // what goes out (seams to inject a smoother's or a pose's defect); empty in the plugin and the node.
   std::function<void(eaci::CellPath&)> smoothed_path_hook;
+  std::function<void(std::vector<Eigen::Vector2d>&)> poses_hook;
   // How landmarks are made (tests: a maker that blocks or fails); empty: Landmarks::compute.
   eaci::LandmarkCache::Maker landmark_maker;
-  // The costmaps come from costmap_2d (the move_base plugin), which empties a costmap it resizes
-  // or clears until its next update: plan on such an emptied costmap as the last filled one
-  // showed it, for up to emptied_costmap_wait seconds (costmap_reset.hpp). Off for the node's maps.
+  // The costmaps come from costmap_2d (the plugins), which empties a costmap it resizes until its
+  // next update: plan on one emptied by a resize as the last filled one showed it, while that one
+  // was read at most stand_in_max_age seconds ago (emptied_costmap.hpp). Off for the node's maps;
+  // the plugins' ~stand_in_for_emptied_costmaps (default true) switches it.
   bool stand_in_for_emptied_costmaps = false;
-  double emptied_costmap_wait = 5.0;
+  double stand_in_max_age = 5.0;
 };
 
 struct PlanRequest {
@@ -76,7 +78,7 @@ struct PlanRequest {
   // start can reach (navfn's rule): the goal itself when free and reachable.
   double tolerance = -1.0;
   // rad, in the costmap's frame (its origin's yaw ignored, as positions): the robot's yaw and the
-  // goal's; NaN: none. The goal's is priced (price_goal_heading), the robot's is not.
+  // goal's; NaN: none. With turn_cost > 0 the goal's is priced, the robot's is not.
   double start_yaw = std::numeric_limits<double>::quiet_NaN();
   double goal_yaw = std::numeric_limits<double>::quiet_NaN();
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
@@ -93,7 +95,7 @@ struct PlanPhases {
   double goal = 0.0;       // the free cell nearest the goal
   eaci::PlanTimes core;    // the search (with the landmarks' check), the colony, smoothing
   double tolerance = 0.0;  // no route to the goal: the flood for the reachable cell and the second plan
-  double check = 0.0;      // the last check of the grid and the smoothed routes
+  double finish = 0.0;     // the grid route's check, the poses that go out made and checked (route_finish.hpp)
   double total = 0.0;      // plan(), entry to return
 };
 // "total 1.234 ms: wait 0.001, costmap 0.002 (12 of 4096 rows read, 3 changed), ..." on one line.
@@ -105,35 +107,28 @@ struct PlanReply {
   PlanOutcome outcome = PlanOutcome::kInternalError;
   bool ok() const { return outcome == PlanOutcome::kOk; }
   std::string error;            // one line (for people) when !ok()
-  // The core's result; result.smoothed_path is the route a robot drives (the grid route, `path`,
-  // when a smoothed segment failed the last check).
+  // The core's result: result.path the planner's 8-connected route, result.smoothed_path its
+  // line-of-sight shortcut, the corners of what goes out unless sent_grid_route.
   eaci::PlanResult result;
   eaci::MapFrame frame;         // the costmap's frame the cells are in
   std::string frame_id;
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // where the route ends: the goal, or the reachable cell within tolerance
-  // run_past_goal: the point the path runs on to past `goal` before it ends there (past_goal.hpp).
-  std::optional<Eigen::Vector2d> past_goal;
-  // lead_start_turn: the arc the path begins with after the start, round the robot the short way
-  // onto the route (start_turn.hpp); empty: none.
-  std::vector<Eigen::Vector2d> start_turn;
-  // The corners the path goes through: result.smoothed_path's, with centre_gaps > 0 its lines
-  // bent through the middle of the gaps they pass (eaci/path/gap_centring.hpp; cell coordinates).
-  eaci::CellPolyline driven;
+  // The positions of the poses that go out, in the costmap's frame, each segment between two of
+  // them checked against the costmap planned on (route_finish.hpp): the start's position first,
+  // `goal` last, at most one cell apart. The adapters add headings only.
+  std::vector<Eigen::Vector2d> poses;
+  // The smoothed route's poses failed the check (a smoother's defect, said at WARN): the grid route's went out.
+  bool sent_grid_route = false;
   StopReason stopped_by = StopReason::kNone;
   int start_cells_opened = 0;   // the robot stood in the inflated band: cells opened to leave it
-  // route_hysteresis: result.smoothed_path is the route sent last, rejoined from the start,
-  // because the new route (result.path, smoothed) was not cheaper enough to replace it.
-  bool kept_previous_route = false;
+  // The costmap was emptied by a resize: the plan ran on the last filled one, placed into its frame.
+  bool stood_in_for_emptied = false;
   RosPlannerOptions options;    // the options the plan was made with (orientation_mode, publish_plan, ...)
   PlanPhases phases;
 };
 
 class PlanningService {
  public:
-  // m: a robot farther than this from the route sent last has left it; route_hysteresis keeps
-  // nothing then.
-  static constexpr double kRejoinDistance = 0.5;
-
   PlanningService(ServiceSettings settings, Logger log);
   ~PlanningService();
   PlanningService(const PlanningService&) = delete;
@@ -168,6 +163,10 @@ class PlanningService {
     return plan(CostmapView::of(costmap), request);
   }
 
+  // The changes the caller took from its keeper for a plan it did not ask for after all (a pose
+  // in another frame): the next plan compares every row. Any thread.
+  void changesNotRead() noexcept { source_.changesNotRead(); }
+
   // Asks the plan in progress to stop with the best route so far; false when none runs.
   bool cancel() noexcept;
 
@@ -179,13 +178,6 @@ class PlanningService {
   PlanReply planLocked(const CostmapView& costmap, const CostmapChanges& changes, const PlanRequest& request,
                        const Configuration& config, const std::function<bool()>& should_stop,
                        const std::atomic<int>& stop_reason);
-  // route_hysteresis: replaces reply.result.smoothed_path by the route sent last, rejoined from
-  // `start`, when the plan goes to the same target on the same frame and configuration, the
-  // robot is within kRejoinDistance of that route, it is still drivable, and it costs at most
-  // (1 + route_hysteresis) x the new one (eaci::polylineObjective, both priced for the turns at
-  // `ends` too); then remembers what goes out.
-  void keepSentRouteIfClose(PlanReply& reply, const eaci::CostGrid& grid, const eaci::GridView& view, eaci::Cell start,
-                            eaci::Cell target, const Configuration& config, const eaci::EndHeadings& ends);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,
@@ -213,24 +205,9 @@ class PlanningService {
   std::optional<eaci::MapFrame> last_frame_;  // the plan's
   int moves_in_a_row_ = 0;                    // the plan's
   bool rolling_ = false;                      // the plan's
-  EmptiedCostmapStandIn emptied_stand_in_;    // the plan's
-  CostmapMirror mirror_;                      // the plan's: the costmap as of the last plan
-  bool mirror_filled_ = false;                // the plan's: mirror_ holds a filled (not uniform) costmap
-  bool mirror_missed_changes_ = false;        // the plan's: the last plan did not sync mirror_ (it stood in)
-  bool distrust_changes_ = false;             // the plan's: the caller's changes missed some (the audit found them)
-  CostmapMirror stood_in_;                    // the plan's: the last filled costmap placed into an emptied one's frame
-  std::string emptied_reported_;              // the plan's: the stand-in's sentence last said
+  CostmapSource source_;                      // the plan's: the costmap as of the last plan (changesNotRead: any thread)
   int landmarks_reported_ = -1;               // the plan's: the count last said (-1: none said)
   std::string landmark_error_reported_;       // the plan's
-  // The plan's: the route last sent out, for route_hysteresis; reset by a failed plan.
-  struct SentRoute {
-    eaci::MapFrame frame;
-    eaci::Cell target;
-    eaci::CellPath corners;
-    std::uint64_t generation = 0;
-  };
-  std::optional<SentRoute> sent_route_;
-
   PlanCancellation cancellation_;
 
   mutable std::mutex last_plan_mutex_;

@@ -1,46 +1,51 @@
 #include "route_defect.hpp"
 
 #include <cstdlib>
+#include <vector>
+
+#include "eaci/grid/segment_walk.hpp"
+#include "eaci/io/text.hpp"
 
 namespace eaci_service {
 namespace {
 
 std::string describe(eaci::Cell c) { return "(row " + std::to_string(c.row) + ", col " + std::to_string(c.col) + ")"; }
 
-// "" when the straight segment between the centres of `a` and `b` passes only passable cells.
-// Cell (r, c) spans columns c - 1/2 .. c + 1/2 and rows r - 1/2 .. r + 1/2. Going from a to b
-// (dc = |b.col - a.col| columns, dr = |b.row - a.row| rows), the line crosses its k-th column
-// border at the fraction (2k - 1) / (2 dc) of the way and its j-th row border at
-// (2j - 1) / (2 dr): comparing (2k - 1) dr with (2j - 1) dc says which comes first, or that
-// both come at once (a corner).
-std::string segmentDefect(const eaci::GridView& view, eaci::Cell a, eaci::Cell b, bool allow_corner_cutting) {
-  const long long dc = std::llabs(static_cast<long long>(b.col) - a.col);
-  const long long dr = std::llabs(static_cast<long long>(b.row) - a.row);
-  const int step_col = b.col > a.col ? 1 : -1, step_row = b.row > a.row ? 1 : -1;
-  eaci::Cell cell = a;
-  if (!view.isFree(cell)) return "it starts in a blocked cell " + describe(cell);
-  long long k = 1, j = 1;  // the next column border and the next row border to cross
-  while (k <= dc || j <= dr) {
-    const long long col_at = k <= dc ? (2 * k - 1) * dr : -1;  // -1: no column border left
-    const long long row_at = j <= dr ? (2 * j - 1) * dc : -1;
-    if (row_at < 0 || (col_at >= 0 && col_at < row_at)) {
-      cell.col += step_col;
-      ++k;
-    } else if (col_at < 0 || row_at < col_at) {
-      cell.row += step_row;
-      ++j;
-    } else {  // through the corner: diagonally
-      const eaci::Cell beside_col{cell.row, cell.col + step_col}, beside_row{cell.row + step_row, cell.col};
-      if (!allow_corner_cutting && (!view.isFree(beside_col) || !view.isFree(beside_row)))
-        return "it passes a blocked cell's corner between " + describe(beside_col) + " and " + describe(beside_row);
-      cell.col += step_col;
-      cell.row += step_row;
-      ++k;
-      ++j;
+std::string describe(const eaci::CellPoint& p) {
+  return "(row " + eaci::formatNumber(p.y(), 3) + ", col " + eaci::formatNumber(p.x(), 3) + ")";
+}
+
+// "" when the straight segment from `a` to `b` passes only passable cells (eaci::walkSegment):
+// every cell it crosses, and without `allow_corner_cutting` every cell it touches at a corner
+// or with an end on a border (`b`'s only with `end_touches`).
+std::string segmentDefect(const eaci::GridView& view, const eaci::CellPoint& a, const eaci::CellPoint& b,
+                          bool allow_corner_cutting, bool end_touches = true) {
+  std::string defect;
+  bool first = true;
+  std::vector<eaci::Cell> touched;  // cells touched at a corner or a border since the last one crossed
+  const auto touchedDefect = [&]() -> std::string {
+    for (const eaci::Cell& c : touched) {
+      if (view.isFree(c)) continue;
+      if (touched.size() >= 2 && (!view.isFree(touched[0]) || !view.isFree(touched[1])))
+        return "it passes a blocked cell's corner between " + describe(touched[0]) + " and " + describe(touched[1]);
+      return "it touches the blocked cell " + describe(c);
     }
-    if (!view.isFree(cell)) return "it crosses the blocked cell " + describe(cell);
-  }
-  return "";
+    return "";
+  };
+  eaci::walkSegment(a, b, [&](eaci::Cell c, double length) {
+    if (first || length > 0) {
+      if (!allow_corner_cutting) defect = touchedDefect();
+      touched.clear();
+      if (defect.empty() && !view.isFree(c))
+        defect = (first ? "it starts in the blocked cell " : "it crosses the blocked cell ") + describe(c);
+      first = false;
+    } else {
+      touched.push_back(c);
+    }
+    return defect.empty();
+  });
+  if (defect.empty() && !allow_corner_cutting && end_touches) defect = touchedDefect();
+  return defect;
 }
 
 }  // namespace
@@ -60,10 +65,26 @@ std::string drivableRouteDefect(const eaci::GridView& view, const eaci::CellPath
   if (corners.empty() || !(corners.front() == from) || !(corners.back() == to)) return "it does not join start and goal";
   if (corners.size() == 1 && !view.isFree(corners.front())) return "its only cell is blocked";
   for (std::size_t i = 1; i < corners.size(); ++i) {
-    const std::string defect = segmentDefect(view, corners[i - 1], corners[i], allow_corner_cutting);
+    const std::string defect =
+        segmentDefect(view, eaci::cellPoint(corners[i - 1]), eaci::cellPoint(corners[i]), allow_corner_cutting);
     if (!defect.empty())
       return "segment " + std::to_string(i) + " of " + std::to_string(corners.size() - 1) + ", " +
              describe(corners[i - 1]) + " to " + describe(corners[i]) + ": " + defect;
+  }
+  return "";
+}
+
+std::string polylineDefect(const eaci::GridView& view, const eaci::CellPolyline& points, bool allow_corner_cutting) {
+  if (points.empty()) return "it has no points";
+  if (points.size() == 1 && !view.isFree(eaci::cellOfPoint(points.front()))) return "its only point is in a blocked cell";
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (!points[i - 1].allFinite() || !points[i].allFinite()) return "point " + std::to_string(i) + " is not finite";
+    // The last point lies in its cell however it touches the cells beside (the goal: the frame's rule).
+    const std::string defect =
+        segmentDefect(view, points[i - 1], points[i], allow_corner_cutting, i + 1 < points.size());
+    if (!defect.empty())
+      return "segment " + std::to_string(i) + " of " + std::to_string(points.size() - 1) + ", " +
+             describe(points[i - 1]) + " to " + describe(points[i]) + ": " + defect;
   }
   return "";
 }

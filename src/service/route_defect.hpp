@@ -1,11 +1,13 @@
 // The last check of a route before it goes out to the robot, written apart from the planner
-// and the smoother that made it: a grid route cell by cell, a smoothed route segment by segment
-// through every cell its straight segments pass.
+// and the smoother that made it: a grid route cell by cell, a smoothed route and the poses that
+// are sent segment by segment, through every cell each straight segment passes
+// (eaci::walkSegment, the one segment walk the smoother prices its shortcuts with).
 #pragma once
 
 #include <string>
 
 #include "eaci/grid/cell.hpp"
+#include "eaci/grid/cell_point.hpp"
 #include "eaci/grid/grid_view.hpp"
 
 namespace eaci_service {
@@ -21,8 +23,16 @@ std::string routeDefect(const eaci::GridView& view, const eaci::CellPath& route,
 // segment fails and where. A segment passes every cell its line crosses the inside of; where
 // the line goes exactly through a cell corner it moves diagonally, and without
 // `allow_corner_cutting` both cells beside that corner must be passable too (the move rule's
-// corner rule). Exact integer arithmetic: no rounding decides a corner.
+// corner rule).
 std::string drivableRouteDefect(const eaci::GridView& view, const eaci::CellPath& corners, eaci::Cell from,
                                 eaci::Cell to, bool allow_corner_cutting);
+
+// "" when every straight segment between consecutive points (cell coordinates, anywhere in the
+// cells: the poses a plan sends) passes only cells `view` lets a robot cross, by the rule above;
+// a point on a cell border touches the cells on both sides, which must then be passable too
+// (without `allow_corner_cutting`), except the first and the last point's (the robot's and the
+// goal's position: they lie in their cells). The first point's cell must be passable; one
+// point: its cell.
+std::string polylineDefect(const eaci::GridView& view, const eaci::CellPolyline& points, bool allow_corner_cutting);
 
 }  // namespace eaci_service

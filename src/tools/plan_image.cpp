@@ -34,7 +34,6 @@ constexpr Rgb kUnknownFreeColour{222, 208, 238};   // unknown, planned as passab
 constexpr Rgb kAuxiliaryColour{166, 186, 210};     // light blue-grey
 constexpr Rgb kGridRoute{kGridRouteColour[0], kGridRouteColour[1], kGridRouteColour[2]};
 constexpr Rgb kSmoothedRoute{kSmoothedRouteColour[0], kSmoothedRouteColour[1], kSmoothedRouteColour[2]};
-constexpr Rgb kWay{kWayColour[0], kWayColour[1], kWayColour[2]};
 constexpr Rgb kHaloColour{255, 255, 255};
 constexpr Rgb kIslandColour{255, 140, 0};
 constexpr Rgb kIslandEdge{105, 50, 0};
@@ -317,7 +316,6 @@ PlanImage renderPlan(const PlanDrawing& d) {
   const bool has_path = result && !result->path.empty();
   const bool has_smoothed = has_path && d.smoothed && !result->smoothed_path.empty();
   const bool has_islands = result && result->islands.size() > 2;
-  const bool has_way = has_path && result->way.size() > 1;
   auto centre = [k](Cell c) { return std::pair<double, double>{(c.col + 0.5) * k, (c.row + 0.5) * k}; };
   auto on_map = [&](Cell c) { return c.row >= 0 && c.col >= 0 && c.row < map.height && c.col < map.width; };
 
@@ -346,7 +344,6 @@ PlanImage renderPlan(const PlanDrawing& d) {
   } else if (has_path) {
     items.push_back({Swatch::kLine, kGridRoute, "route"});
   }
-  if (has_way) items.push_back({Swatch::kLine, kWay, "way (way_cost_factor): the route keeps within way_corridor of it"});
   if (has_islands)
     items.push_back({Swatch::kDisc, kIslandColour,
                      islands_drawn.size() < island_count
@@ -433,7 +430,6 @@ PlanImage renderPlan(const PlanDrawing& d) {
     canvas.strokePolyline(points, width, colour);
   };
   const double halo = std::max(2.0, small_cells ? path_w * 0.6 : 0.16 * k);
-  if (has_way) draw_route(result->way, std::max(1.5, 0.4 * path_w), 0.0, kWay);  // under the routes
   // With a smoothed route the grid route is a wide line and the smoothed route a narrow one
   // on top of it: where the two coincide the smoothed route runs inside the grid route's band,
   // where they part both show.

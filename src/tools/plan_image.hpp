@@ -37,7 +37,6 @@ struct PlanImage {
 // a robot drives (magenta, wider, drawn over it).
 constexpr std::array<std::uint8_t, 3> kGridRouteColour{20, 80, 235};
 constexpr std::array<std::uint8_t, 3> kSmoothedRouteColour{215, 0, 150};
-constexpr std::array<std::uint8_t, 3> kWayColour{0, 150, 140};  // way_cost_factor's way, under the routes
 
 struct PlanDrawing {
   const OccupancyMap* map = nullptr;                 // required

@@ -1,7 +1,6 @@
 #include "plan_json.hpp"
 
 #include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -17,7 +16,6 @@
 #include "common/parameters_json.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/metrics/path_metrics.hpp"
-#include "eaci/path/gap_centring.hpp"
 
 namespace eaci::tools {
 namespace {
@@ -58,7 +56,6 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   // obstacles) and mean cell cost 0..254 of the route, on the grid it was planned on.
   j["min_clearance_m"] = nullptr;
   j["smoothed_min_clearance_m"] = nullptr;
-  j["driven_min_clearance_m"] = nullptr;
   j["mean_cell_cost"] = nullptr;
   if (has_length && map && !r.path.empty()) {
     const UnknownPolicy unknown = context.unknown_policy == "expensive" ? UnknownPolicy::kExpensive : UnknownPolicy::kObstacle;
@@ -75,26 +72,6 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
                                  ? CostGrid::fromView(*context.planned_on, context.parameters.allow_corner_cutting)
                                  : on_map;
     j["mean_cell_cost"] = finiteOrNull(meanCellCost(planned, r.path));
-    // With centre_gaps: the smoothed route's lines bent through the gaps, on the grid planned on
-    // (as the planning service bends them on the costmap), and their clearance.
-    if (context.parameters.smooth_path && context.parameters.centre_gaps > 0 && !r.smoothed_path.empty()) {
-      const auto centring_start = std::chrono::steady_clock::now();
-      const CellPolyline driven = centreInGaps(planned, r.smoothed_path, context.parameters.centre_gaps);
-      const double centring_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - centring_start).count();
-      json points = json::array(), points_xy = json::array();
-      for (const CellPoint& p : driven) {
-        points.push_back(json::array({p.y(), p.x()}));  // [row, col], as the cells of smoothed_path
-        if (map) {
-          const Eigen::Vector2d w = map->pointToWorld(p);
-          points_xy.push_back(json::array({w.x(), w.y()}));
-        }
-      }
-      j["driven_path"] = std::move(points);
-      j["driven_path_xy"] = std::move(points_xy);
-      j["driven_min_clearance_m"] = finiteOrNull(minPolylineClearance(on_map, driven, distances) * map->resolution);
-      j["driven_ms"] = centring_ms;  // bending the lines, after time_ms (the plan)
-    }
   }
 
   json path = json::array(), path_xy = json::array();
@@ -126,7 +103,6 @@ json planToJson(const PlanResult& r, const PlanContext& context) {
   j["total_turn_deg"] = r.success() ? json(r.total_turn_deg) : json(nullptr);
 
   j["islands"] = r.islands;
-  j["way"] = r.way;  // way_cost_factor > 0: the route the plan kept within way_corridor cells of; else []
 
   j["time_ms"] = context.time_ms ? json(finiteOrNull(*context.time_ms)) : json(nullptr);
   j["seed"] = context.parameters.seed;

@@ -39,8 +39,7 @@ struct PlanContext {
 std::string outcomeWord(const PlanResult& result, const PlanContext& context);
 
 // The report: success, outcome, error (only when failed), status, algorithm, length, cost, combined_cost, length_m,
-// min_clearance_m, smoothed_min_clearance_m, driven_min_clearance_m (null unless centre_gaps > 0), mean_cell_cost,
-// (driven_path, driven_path_xy and driven_ms, with centre_gaps > 0), path, path_xy, smoothed_path, smoothed_length,
+// min_clearance_m, smoothed_min_clearance_m, mean_cell_cost, path, path_xy, smoothed_path, smoothed_length,
 // iterations_to_converge, iterations_run, stopped_early, interrupted, lost_ants_total,
 // ants_per_iteration, lost_ants_per_iteration, best_cost_per_iteration, best_cost_so_far (null where
 // infinite; the same again as best_length_per_iteration and best_length_so_far, their names until

@@ -4,7 +4,7 @@ A bad value at start is named on every request, which fails, until a reconfigure
 value from dynamic_reconfigure is rejected with an error naming it, plans go on with the values in
 force, and the reconfigure's answer carries them.
 
-The node (planner_reconfigure.test) starts on the lab map with aco_rho: 0.0, out of (0, 1] (inside
+The node (planner_reconfigure.test) starts on the lab map with kappa: 0.0, out of (0, 1.3] (inside
 the cfg's range, so dynamic_reconfigure does not clamp it).
 """
 import math
@@ -103,32 +103,32 @@ class PlannerReconfigure(unittest.TestCase):
         self.assertLessEqual(math.hypot(last.x - goal[0], last.y - goal[1]), within)
 
     def test_1_a_bad_start_value_is_named_until_it_is_fixed(self):
-        start_error = NODE + "/aco_rho must be in (0, 1] (got 0): refusing to plan until it is fixed"
+        start_error = NODE + "/kappa must be in (0, 1.3] (got 0): refusing to plan until it is fixed"
         for _ in range(2):  # every request, not only the first
             self.assert_refused_naming(start_error)
-        # Changing another parameter is not a fix: rejected, aco_rho still named.
+        # Changing another parameter is not a fix: rejected, kappa still named.
         self.clear_errors()
         config = self.client.update_configuration({"cost_factor": 1.0})
-        self.assert_logged("reconfigure rejected: " + NODE + "/aco_rho must be in (0, 1] (got 0)")
+        self.assert_logged("reconfigure rejected: " + NODE + "/kappa must be in (0, 1.3] (got 0)")
         self.assertEqual(config["cost_factor"], 3.0)  # the value in force, written back
         self.assert_refused_naming(start_error)
-        config = self.client.update_configuration({"aco_rho": 0.5})
-        self.assertEqual(config["aco_rho"], 0.5)
+        config = self.client.update_configuration({"kappa": 0.5})
+        self.assertEqual(config["kappa"], 0.5)
         self.assert_reaches(self.plan())
 
     def test_2_a_bad_value_at_run_time_is_rejected_and_plans_go_on(self):
-        self.assert_rejected({"aco_rho": 0.0},
-                             "reconfigure rejected: " + NODE + "/aco_rho must be in (0, 1] (got 0); "
-                             "the values in force stay (aco_rho stays 0.5)", {"aco_rho": 0.5})
+        self.assert_rejected({"kappa": 0.0},
+                             "reconfigure rejected: " + NODE + "/kappa must be in (0, 1.3] (got 0); "
+                             "the values in force stay (kappa stays 0.5)", {"kappa": 0.5})
         self.assert_rejected({"algorithm": "dijkstra", "cost_factor": 2.0},
-                             "reconfigure rejected: " + NODE + "/algorithm must be eaci, aco, maaco or astar (got 'dijkstra')",
+                             "reconfigure rejected: " + NODE + "/algorithm must be eaci or astar (got 'dijkstra'",
                              {"algorithm": "astar", "cost_factor": 3.0})
         # Outside the cfg's range: clamped by dynamic_reconfigure (as global_planner's), then valid.
-        config = self.client.update_configuration({"aco_rho": 1.5})
-        self.assertEqual(config["aco_rho"], 1.0)
+        config = self.client.update_configuration({"kappa": 1.5})
+        self.assertEqual(config["kappa"], 1.3)
         self.assert_reaches(self.plan())
-        config = self.client.update_configuration({"aco_rho": 0.5})
-        self.assertEqual(config["aco_rho"], 0.5)
+        config = self.client.update_configuration({"kappa": 0.5})
+        self.assertEqual(config["kappa"], 0.5)
 
     def test_3_default_tolerance_and_the_requests_own(self):
         self.client.update_configuration({"default_tolerance": 0.0})
@@ -197,14 +197,6 @@ class PlannerReconfigure(unittest.TestCase):
                         "turn_cost 50 left the route turning %.3f rad against %.3f rad at 0"
                         % (total_turn(dear), total_turn(free)))
         self.client.update_configuration({"smooth_path": True, "turn_cost": 0.0})
-
-    def test_7_smooth_tolerance(self):
-        # The smoother's tolerance reaches the planner at run time, within its range [0, 1].
-        config = self.client.update_configuration({"smooth_tolerance": 0.3})
-        self.assertAlmostEqual(config["smooth_tolerance"], 0.3)
-        self.assert_reaches(self.plan())
-        config = self.client.update_configuration({"smooth_tolerance": 0.0})
-        self.assertEqual(config["smooth_tolerance"], 0.0)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,8 @@
 
 #include <nav_msgs/Path.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -13,9 +15,9 @@
 namespace eaci_test {
 
 // "" when `path` is a route from `start` to `goal` on `map`, else what is wrong with it.
-// Every pose lies on a free cell, the first in the start cell, the last in the goal cell, and
-// consecutive poses lie in the same or 8-neighbouring cells, a diagonal step only between two
-// free side cells (the node never cuts corners).
+// Every pose lies on a free cell, the first in the start cell, the last in the goal cell,
+// consecutive poses at most one cell apart (as navfn's and global_planner's), and the segment
+// between them, sampled every 1/100 of a cell, only on free cells.
 inline std::string routeDefect(const eaci::OccupancyMap& map, const nav_msgs::Path& path, eaci::Cell start, eaci::Cell goal) {
   auto free = [&](eaci::Cell c) {
     return c.row >= 0 && c.col >= 0 && c.row < map.height && c.col < map.width &&
@@ -34,10 +36,16 @@ inline std::string routeDefect(const eaci::OccupancyMap& map, const nav_msgs::Pa
     }
     if (k == 0 && !(*cell == start)) return "the first pose is not in the start cell";
     if (k > 0) {
-      const int dr = cell->row - previous.row, dc = cell->col - previous.col;
-      if (std::abs(dr) > 1 || std::abs(dc) > 1) return "poses " + std::to_string(k - 1) + " and " + std::to_string(k) + " are not in neighbouring cells";
-      if (dr != 0 && dc != 0 && (!free({previous.row + dr, previous.col}) || !free({previous.row, previous.col + dc})))
-        return "the step to pose " + std::to_string(k) + " cuts a corner";
+      const auto& q = path.poses[k - 1].pose.position;
+      const double length = std::hypot(p.x - q.x, p.y - q.y);
+      if (length > map.resolution * (1 + 1e-6))  // the message's resolution is a float
+        return "poses " + std::to_string(k - 1) + " and " + std::to_string(k) + " are more than a cell apart";
+      const int samples = std::max(1, static_cast<int>(std::ceil(length / map.resolution * 100)));
+      for (int i = 1; i < samples; ++i) {
+        const double t = static_cast<double>(i) / samples;
+        const auto on = map.worldToCell({q.x + t * (p.x - q.x), q.y + t * (p.y - q.y)});
+        if (!on || !free(*on)) return "the step to pose " + std::to_string(k) + " crosses a blocked cell";
+      }
     }
     previous = *cell;
   }

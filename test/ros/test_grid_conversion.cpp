@@ -29,15 +29,6 @@ nav_msgs::OccupancyGrid sampleGrid() {
   return g;
 }
 
-// A pose at (x, y) facing east.
-geometry_msgs::PoseStamped poseAt(double x, double y) {
-  geometry_msgs::PoseStamped pose;
-  pose.pose.position.x = x;
-  pose.pose.position.y = y;
-  pose.pose.orientation.w = 1.0;
-  return pose;
-}
-
 }  // namespace
 
 TEST(GridConversion, WorldToCellUsesTheBottomLeftOriginAndTopFirstRows) {
@@ -78,9 +69,10 @@ TEST(GridConversion, NearestFreeCellWithinTolerance) {
   EXPECT_TRUE(view.isFree(*moved));
 }
 
-TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
+// The poses are the service's points as they are (PlanReply::poses, checked there), each facing
+// the next one, the last with the goal's orientation.
+TEST(GridConversion, PathPosesAreThePointsFacingTheNextAndEndWithTheGoalPose) {
   ros::Time::init();
-  const auto frame = eaci_ros::frameOf(sampleGrid());
   geometry_msgs::PoseStamped start, goal;
   start.pose.position.x = -0.8;
   start.pose.position.y = 2.2;
@@ -88,72 +80,19 @@ TEST(GridConversion, PathPosesFaceTheNextPoseAndEndWithTheGoalPose) {
   goal.pose.position.y = 3.3;
   goal.pose.orientation.z = std::sin(0.25);
   goal.pose.orientation.w = std::cos(0.25);  // yaw 0.5
-  const eaci::CellPath cells{{2, 0}, {2, 1}, {1, 2}, {0, 3}};
-  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0));
+  const std::vector<Eigen::Vector2d> points{{-0.8, 2.2}, {-0.25, 2.25}, {0.25, 2.75}, {0.7, 3.3}};
+  const auto path = eaci_ros::toPath(points, "map", start, goal, ros::Time(1.0));
   ASSERT_EQ(path.poses.size(), 4u);
   EXPECT_EQ(path.header.frame_id, "map");
-  EXPECT_DOUBLE_EQ(path.poses[0].pose.position.x, -0.8);   // the request's start, not the cell centre
-  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.x, -0.25);  // centre of (2,1)
-  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.y, 2.25);
-  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.x, 0.7);    // the request's goal
-  // (2,1) -> (1,2): up and right, 45 degrees.
+  EXPECT_EQ(path.poses[2].header.frame_id, "map");
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    EXPECT_EQ(path.poses[k].pose.position.x, points[k].x()) << k;
+    EXPECT_EQ(path.poses[k].pose.position.y, points[k].y()) << k;
+  }
+  // (-0.25, 2.25) -> (0.25, 2.75): up and right, 45 degrees.
   EXPECT_NEAR(tf2::getYaw(path.poses[1].pose.orientation), M_PI / 4, 1e-9);
   EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.5, 1e-9);
-}
-
-// A corner off the cell centres (a line bent through a gap, eaci/path/gap_centring.hpp) is a
-// pose where it lies, and its segments have a pose every cell of length: (col 1.5, row 1.6) is
-// x = -1 + 2.0 x 0.5 = 0, y = 2 + (3 - 1.6 - 0.5) x 0.5 = 2.45; each segment, 1.55 cells, in two.
-TEST(GridConversion, CornersOffTheCellCentresArePosesWhereTheyLie) {
-  ros::Time::init();
-  const auto frame = eaci_ros::frameOf(sampleGrid());
-  EXPECT_EQ(frame.pointToWorld(eaci::cellPoint(Cell{1, 2})), frame.cellToWorld(Cell{1, 2}));
-  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
-  const eaci::CellPolyline corners{{0.0, 2.0}, {1.5, 1.6}, {3.0, 2.0}};
-  const auto path = eaci_ros::toPath(corners, frame, start, goal, ros::Time(1.0));
-  ASSERT_EQ(path.poses.size(), 5u);  // start, halfway, the corner, halfway, the goal
-  EXPECT_NEAR(path.poses[2].pose.position.x, 0.0, 1e-12);
-  EXPECT_NEAR(path.poses[2].pose.position.y, 2.45, 1e-12);
-  EXPECT_NEAR(path.poses[1].pose.position.x, -0.375, 1e-12);
-  EXPECT_NEAR(path.poses[1].pose.position.y, 2.35, 1e-12);
-  EXPECT_NEAR(tf2::getYaw(path.poses[2].pose.orientation), std::atan2(-0.2, 0.75), 1e-9);  // down the rows: y falls
-}
-
-// run_past_goal: a pose at the point past the goal comes just before the goal's, facing on
-// the way the route arrived (not back at the goal); the goal pose stays last.
-TEST(GridConversion, APathThatRunsPastTheGoalEndsWithTheGoalPose) {
-  ros::Time::init();
-  const auto frame = eaci_ros::frameOf(sampleGrid());
-  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
-  const eaci::CellPath cells{{2, 0}, {2, 3}};  // one segment east
-  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,
-                                     Eigen::Vector2d{0.82, 2.25});
-  ASSERT_EQ(path.poses.size(), 5u);  // start, the centres of (2,1) and (2,2), past the goal, the goal
-  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.x, 0.82);
-  EXPECT_DOUBLE_EQ(path.poses[3].pose.position.y, 2.25);
-  EXPECT_NEAR(tf2::getYaw(path.poses[3].pose.orientation), 0.0, 1e-9);  // east, as it arrived
-  EXPECT_DOUBLE_EQ(path.poses[4].pose.position.x, 0.75);
-  EXPECT_DOUBLE_EQ(path.poses[4].pose.position.y, 2.25);
-}
-
-// lead_start_turn: the arc's points come right after the start pose, and the route goes on from
-// its first point beyond the arc's radius (0.6 m here: the centre of (2,1), 0.5 m from the
-// start, is left out); each pose faces the next one.
-TEST(GridConversion, APathThatLeadsTheStartTurnBeginsWithTheArc) {
-  ros::Time::init();
-  const auto frame = eaci_ros::frameOf(sampleGrid());
-  const auto start = poseAt(-0.75, 2.25), goal = poseAt(0.75, 2.25);  // centres of (2,0) and (2,3)
-  const eaci::CellPath cells{{2, 0}, {2, 3}};
-  const std::vector<Eigen::Vector2d> arc{{-0.75, 2.85}, {-0.15, 2.25}};
-  const auto path = eaci_ros::toPath(cells, frame, start, goal, ros::Time(1.0), eaci::OrientationMode::kForward,
-                                     std::nullopt, arc);
-  ASSERT_EQ(path.poses.size(), 5u);  // start, the arc's two points, the centre of (2,2), the goal
-  const double expected[5][2] = {{-0.75, 2.25}, {-0.75, 2.85}, {-0.15, 2.25}, {0.25, 2.25}, {0.75, 2.25}};
-  for (int k = 0; k < 5; ++k) {
-    EXPECT_DOUBLE_EQ(path.poses[k].pose.position.x, expected[k][0]) << k;
-    EXPECT_DOUBLE_EQ(path.poses[k].pose.position.y, expected[k][1]) << k;
-  }
-  EXPECT_NEAR(tf2::getYaw(path.poses[1].pose.orientation), -M_PI / 4, 1e-9);  // towards (-0.15, 2.25)
+  EXPECT_TRUE(eaci_ros::toPath({}, "map", start, goal, ros::Time(1.0)).poses.empty());
 }
 
 TEST(GridConversion, InflationGrowsObstaclesByTheRadius) {

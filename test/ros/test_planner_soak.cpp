@@ -121,7 +121,9 @@ TEST(PlannerSoak, AThousandRandomPlansAreValidAndTheNodeDoesNotGrow) {
     if (!poses.empty()) {
       ++routes;
       const std::string defect = eaci_test::routeDefect(map, srv.response.plan, start, goal);
-      EXPECT_EQ(defect, "") << "call " << call;
+      EXPECT_EQ(defect, "") << "call " << call << ": start (" << srv.request.start.pose.position.x << ", "
+                            << srv.request.start.pose.position.y << "), goal (" << srv.request.goal.pose.position.x
+                            << ", " << srv.request.goal.pose.position.y << "), " << poses.size() << " poses";
       if (defect.empty()) ++valid;
     }
     if (call == kBaselineCall) rss_baseline = residentMiB(pid);

@@ -3,6 +3,7 @@
 // in force are written back. No rosmaster needed.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -31,15 +32,31 @@ std::string errorWith(Change change) {
 
 }  // namespace
 
-TEST(ReconfigureConfig, HoldsEveryTableParameterButCornerCuttingAndTheRunTimeRosOptions) {
-  std::set<std::string> expected;
-  for (const std::string& name : eaci::parameterNames())
-    if (name != "allow_corner_cutting") expected.insert(name);  // never on a robot
-  for (const char* option : {"algorithm", "default_tolerance", "max_planning_time", "publish_plan",
-                             "visualize_pheromone", "orientation_mode", "route_hysteresis", "price_goal_heading",
-                             "run_past_goal", "lead_start_turn"})
-    expected.insert(option);
-  EXPECT_EQ(configNames(), expected);
+// The robot's group holds what a builder sets for a robot, at most 15; the colony's group the
+// colony's research parameters; nothing of the ACO and MAACO baselines, and no smoothing or
+// turn-pricing variants (the CLI's).
+TEST(ReconfigureConfig, TheRobotsGroupHoldsAtMostFifteenAndTheColonyItsOwn) {
+  const std::set<std::string> robot = {"algorithm",   "default_tolerance", "allow_unknown",     "neutral_cost",
+                                       "cost_factor", "lethal_cost",       "turn_cost",         "smooth_path",
+                                       "max_planning_time", "orientation_mode", "publish_plan", "visualize_pheromone"};
+  const std::set<std::string> colony = {"ants",   "max_iterations",  "alpha",        "beta",
+                                        "q",      "kappa",           "islands",      "lambda",
+                                        "epsilon", "island_strategy", "island_spacing_max", "region_margin",
+                                        "early_stop_iterations", "stop_gap", "seed", "threads"};
+  std::map<std::string, std::set<std::string>> groups;
+  dynamic_reconfigure::ConfigDescription description = PlannerConfig::__getDescriptionMessage__();
+  for (const auto& group : description.groups)
+    for (const auto& parameter : group.parameters) groups[group.name].insert(parameter.name);
+  EXPECT_EQ(groups["robot"], robot);
+  EXPECT_EQ(groups["colony"], colony);
+  EXPECT_LE(robot.size(), 15u);
+  std::set<std::string> all = robot;
+  all.insert(colony.begin(), colony.end());
+  EXPECT_EQ(configNames(), all);
+  for (const std::string& name : configNames()) {
+    EXPECT_EQ(name.rfind("aco_", 0), std::string::npos) << name;
+    EXPECT_EQ(name.rfind("maaco_", 0), std::string::npos) << name;
+  }
 }
 
 // Every default of the cfg is the plugin's (rosDefaultParameters(), RosPlannerOptions{}).
@@ -54,10 +71,8 @@ TEST(ReconfigureConfig, DefaultsAreTheRobotReadyOnes) {
 // The cfg's min and max are valid values (dynamic_reconfigure clamps into them), except where
 // the valid range is open at that end (then the bound itself is named as bad).
 TEST(ReconfigureConfig, TheRangesAreTheValidationsRanges) {
-  const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "aco_rho", "aco_tau0", "neutral_cost",
-                                                "maaco_q", "maaco_rho", "maaco_tau0"};
-  const std::set<std::string> words = {"algorithm", "island_strategy", "maaco_candidates", "maaco_start_distance",
-                                       "maaco_bounds", "turn_cost_unit"};
+  const std::set<std::string> open_at_min = {"q", "kappa", "lambda", "neutral_cost"};
+  const std::set<std::string> words = {"algorithm", "island_strategy"};
   for (const PlannerConfig* bound : {&PlannerConfig::__getMin__(), &PlannerConfig::__getMax__()}) {
     const bool at_min = bound == &PlannerConfig::__getMin__();
     for (const auto& [name, text] : eaci_ros::configTexts(*bound)) {
@@ -89,10 +104,8 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   config.neutral_cost = 20.0;
   config.lethal_cost = 200;
   config.allow_unknown = false;
-  config.aco_rho = 0.25;
   config.ants = 7;
   config.island_strategy = "paper";
-  config.turn_cost_unit = "route_cell";
   config.algorithm = "astar";
   config.default_tolerance = 0.3;
   config.publish_plan = false;
@@ -103,10 +116,8 @@ TEST(ReconfigureConfig, EveryValueSetsItsParameterAndTheOthersStay) {
   EXPECT_EQ(params.neutral_cost, 20.0);
   EXPECT_EQ(params.lethal_cost, 200);
   EXPECT_FALSE(params.allow_unknown);
-  EXPECT_EQ(params.aco_rho, 0.25);
   EXPECT_EQ(params.ants, 7);
   EXPECT_EQ(params.island_strategy, eaci::IslandStrategy::kPaper);
-  EXPECT_EQ(params.turn_cost_unit, eaci::TurnCostUnit::kRouteCell);
   EXPECT_EQ(params.kappa, 0.9);
   EXPECT_FALSE(params.allow_corner_cutting);
   EXPECT_EQ(options.algorithm, eaci::Algorithm::kAStar);
@@ -135,10 +146,11 @@ TEST(ReconfigureConfig, OnlyTheChangedValuesAreSet) {
 }
 
 TEST(ReconfigureConfig, ABadValueIsNamedWithItsValueAndWhy) {
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 0.0; }), "aco_rho must be in (0, 1] (got 0)");
-  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.aco_rho = 1.5; }), "aco_rho must be in (0, 1] (got 1.5)");
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.kappa = 0.0; }), "kappa must be in (0, 1.3] (got 0)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.algorithm = "dijkstra"; }),
-            "algorithm must be eaci, aco, maaco or astar (got 'dijkstra')");
+            "algorithm must be eaci or astar (got 'dijkstra'; the paper's aco and maaco baselines run in eaci_plan and "
+            "eaci_bench)");
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.algorithm = "maaco"; }).rfind("algorithm must be eaci or astar", 0), 0u);
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.lethal_cost = 300; }),
             "lethal_cost must be in 1..255, the costmap cost at or above which a cell is an obstacle (got 300)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.orientation_mode = 7; }).rfind("orientation_mode: '7' is not one of", 0),
@@ -150,31 +162,33 @@ TEST(ReconfigureConfig, ABadValueIsNamedWithItsValueAndWhy) {
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.default_tolerance = -0.1; }),
             "default_tolerance must be a distance >= 0 (got -0.1)");
   EXPECT_EQ(errorWith([](PlannerConfig& c) { c.max_planning_time = -1; }),
-            "max_planning_time must be >= 0 seconds, 0 = no limit (got -1)");
+            "max_planning_time must be in [0, 3600] seconds, 0 = no limit (got -1)");
+  EXPECT_EQ(errorWith([](PlannerConfig& c) { c.max_planning_time = 1e10; }),  // its deadline would overflow
+            "max_planning_time must be in [0, 3600] seconds, 0 = no limit (got 1e+10)");
 }
 
 // A rejected reconfigure writes the values in force back into the config it answers with.
 TEST(ReconfigureConfig, TheValuesInForceAreWrittenBack) {
   eaci::Parameters params = eaci_ros::rosDefaultParameters();
-  params.aco_rho = 0.25;
+  params.kappa = 0.5;
   params.ants = 12;
   params.allow_unknown = false;
   params.island_strategy = eaci::IslandStrategy::kPaper;
   RosPlannerOptions options;
-  options.algorithm = eaci::Algorithm::kAco;
+  options.algorithm = eaci::Algorithm::kAStar;
   options.orientation_mode = eaci::OrientationMode::kInterpolate;
   options.max_planning_time = 0.75;
   PlannerConfig config = PlannerConfig::__getDefault__();
-  config.aco_rho = 0.0;  // rejected: the values in force go back
+  config.kappa = 0.0;  // rejected: the values in force go back
   eaci::Parameters tried = params;
   RosPlannerOptions tried_options = options;
-  EXPECT_EQ(eaci_ros::applyConfig(config, nullptr, tried, tried_options), "aco_rho must be in (0, 1] (got 0)");
+  EXPECT_EQ(eaci_ros::applyConfig(config, nullptr, tried, tried_options), "kappa must be in (0, 1.3] (got 0)");
   eaci_ros::storeInConfig(params, options, config);
-  EXPECT_EQ(config.aco_rho, 0.25);
+  EXPECT_EQ(config.kappa, 0.5);
   EXPECT_EQ(config.ants, 12);
   EXPECT_FALSE(config.allow_unknown);
   EXPECT_EQ(config.island_strategy, "paper");
-  EXPECT_EQ(config.algorithm, "aco");
+  EXPECT_EQ(config.algorithm, "astar");
   EXPECT_EQ(config.orientation_mode, 2);  // global_planner's Interpolate
   EXPECT_EQ(config.max_planning_time, 0.75);
   params.seed = 1ull << 40;  // wider than the config's int: the config's stays

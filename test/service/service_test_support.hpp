@@ -46,6 +46,32 @@ inline PlanRequest request(const CostmapSnapshot& costmap, eaci::Cell from, eaci
   return r;
 }
 
+// "" when the poses (metres) run from `start` to `goal`, lie at most `spacing` metres apart,
+// and every segment between two of them, sampled every 1/100 of a cell, stays in cells below
+// 253 (`start_cells` may hold the robot in the band); else the first fault. A check apart from
+// the service's own segment walk: dense samples, not border crossings.
+inline std::string sentPosesFault(const CostmapSnapshot& costmap, const std::vector<Eigen::Vector2d>& poses,
+                               const Eigen::Vector2d& start, const Eigen::Vector2d& goal, double spacing) {
+  if (poses.size() < 2) return "fewer than two poses";
+  if ((poses.front() - start).norm() > 1e-9) return "the first pose is not the start";
+  if ((poses.back() - goal).norm() > 1e-9) return "the last pose is not the goal";
+  const eaci::MapFrame& frame = costmap.frame;
+  const eaci::Cell start_cell = *frame.worldToCell(start);
+  for (std::size_t k = 1; k < poses.size(); ++k) {
+    const Eigen::Vector2d a = poses[k - 1], b = poses[k];
+    if ((b - a).norm() > spacing + 1e-9) return "poses " + std::to_string(k - 1) + " and " + std::to_string(k) + " are too far apart";
+    const int samples = std::max(1, static_cast<int>(std::ceil((b - a).norm() / frame.resolution * 100)));
+    for (int i = 0; i <= samples; ++i) {
+      const auto cell = frame.worldToCell(a + (b - a) * (static_cast<double>(i) / samples));
+      if (!cell) return "segment " + std::to_string(k) + " leaves the map";
+      if (at(costmap, cell->row, cell->col) >= kCostmapInscribed && !(*cell == start_cell))
+        return "segment " + std::to_string(k) + " enters the blocked cell (row " + std::to_string(cell->row) +
+               ", col " + std::to_string(cell->col) + ")";
+    }
+  }
+  return "";
+}
+
 // "" when `path` runs from `from` to `to` by 8-neighbour moves over cells below 253 (the first
 // `band_cells` cells may be in the inscribed band: the robot stood there), never between two
 // corner-touching blocked cells; else what is wrong.

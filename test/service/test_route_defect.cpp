@@ -8,11 +8,13 @@
 
 #include "costmap_snapshot.hpp"
 #include "route_defect.hpp"
+#include "route_finish.hpp"
 
 namespace {
 
 using eaci::Cell;
 using eaci_service::drivableRouteDefect;
+using eaci_service::polylineDefect;
 using eaci_service::routeDefect;
 
 // A costmap_2d-style map of `rows` ('.' free 0, '#' lethal 254, '?' unknown 255), top row
@@ -134,6 +136,64 @@ TEST(GridRoute, MovesAreOneCellAndKeepTheCornerRule) {
   EXPECT_EQ(routeDefect(map.view(), {{0, 0}, {1, 1}, {2, 2}}, {0, 0}, {2, 2}, true),
             "segment 1 of 2, (row 0, col 0) to (row 1, col 1): it crosses the blocked cell (row 1, col 1)");
   EXPECT_EQ(routeDefect(map.view(), {{0, 1}, {0, 2}}, {0, 0}, {0, 2}, false), "it does not join start and goal");
+}
+
+// The poses sent: every segment between two points anywhere in the cells, and a point on a
+// cell corner touches the cells round it. From (0, 0) to (1, 1) through the corner point
+// (col 0.5, row 0.5): (0, 1) beside it is blocked.
+TEST(SentPoses, APoseOnACornerTouchesTheCellsRoundIt) {
+  const Map map({
+      ".#.",
+      "...",
+      "...",
+  });
+  const eaci::CellPolyline through_corner{{0.0, 0.0}, {0.5, 0.5}, {1.0, 1.0}};
+  EXPECT_EQ(polylineDefect(map.view(), through_corner, false),
+            "segment 1 of 2, (row 0, col 0) to (row 0.5, col 0.5): it passes a blocked cell's corner between "
+            "(row 0, col 1) and (row 1, col 0)");
+  EXPECT_EQ(polylineDefect(map.view(), through_corner, true), "");
+  // Off the corner, a point in (1, 0) then (1, 1): nothing blocked is touched.
+  EXPECT_EQ(polylineDefect(map.view(), {{0.0, 0.0}, {0.2, 0.8}, {1.0, 1.0}}, false), "");
+  // A point that lies in a blocked cell between two free ones.
+  EXPECT_EQ(polylineDefect(map.view(), {{0.0, 0.0}, {1.1, 0.2}, {2.0, 0.0}}, false),
+            "segment 1 of 2, (row 0, col 0) to (row 0.2, col 1.1): it crosses the blocked cell (row 0, col 1)");
+}
+
+// A point on the border of a blocked cell touches it, but the last point (the goal's position)
+// lies in its cell however it touches the next; the first must be in a passable cell.
+TEST(SentPoses, OnlyTheEndsMayTouchABlockedCellsBorder) {
+  const Map map({
+      ".#.",
+      "...",
+  });
+  EXPECT_EQ(polylineDefect(map.view(), {{0.0, 1.0}, {1.0, 0.5}}, false), "");  // ends on (0, 1)'s lower border
+  EXPECT_EQ(polylineDefect(map.view(), {{0.0, 1.0}, {0.5, 0.0}, {0.0, 0.0}}, false),
+            "segment 1 of 2, (row 1, col 0) to (row 0, col 0.5): it touches the blocked cell (row 0, col 1)");
+  EXPECT_EQ(polylineDefect(map.view(), {{1.0, 0.0}, {0.0, 1.0}}, false),
+            "segment 1 of 1, (row 0, col 1) to (row 1, col 0): it starts in the blocked cell (row 0, col 1)");
+  EXPECT_EQ(polylineDefect(map.view(), {}, false), "it has no points");
+}
+
+// posesAlong: the robot's position, its cell's centre, a point every cell or less along each
+// segment of the route, the goal's position. 1 m cells, 4 x 3, origin (0, 0): the centre of
+// (row 2, col 0) is (0.5, 0.5).
+TEST(SentPoses, PosesLieAtMostACellApartFromTheRobotToTheGoal) {
+  eaci::MapFrame frame;
+  frame.width = 4;
+  frame.height = 3;
+  const auto poses = eaci_service::posesAlong({{2, 0}, {2, 3}}, frame, {0.2, 0.3}, {3.9, 0.2});
+  const std::vector<Eigen::Vector2d> expected{{0.2, 0.3}, {0.5, 0.5}, {1.5, 0.5}, {2.5, 0.5}, {3.5, 0.5}, {3.9, 0.2}};
+  ASSERT_EQ(poses.size(), expected.size());
+  for (std::size_t k = 0; k < poses.size(); ++k) EXPECT_LT((poses[k] - expected[k]).norm(), 1e-12) << k;
+  // The diagonal from (row 2, col 0) to (row 0, col 2), 2 sqrt 2 cells: three pieces of 0.943;
+  // a start and goal at the centres add no pose.
+  const auto diagonal = eaci_service::posesAlong({{2, 0}, {0, 2}}, frame, {0.5, 0.5}, {2.5, 2.5});
+  ASSERT_EQ(diagonal.size(), 4u);
+  EXPECT_LT((diagonal[1] - Eigen::Vector2d(0.5 + 2.0 / 3, 0.5 + 2.0 / 3)).norm(), 1e-12);
+  EXPECT_LT((diagonal[3] - Eigen::Vector2d(2.5, 2.5)).norm(), 1e-12);
+  // Start and goal in one cell: two poses.
+  EXPECT_EQ(eaci_service::posesAlong({{1, 1}}, frame, {1.5, 1.5}, {1.5, 1.5}).size(), 2u);
+  EXPECT_TRUE(eaci_service::posesAlong({}, frame, {1.5, 1.5}, {1.5, 1.5}).empty());
 }
 
 }  // namespace

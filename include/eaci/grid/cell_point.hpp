@@ -1,5 +1,5 @@
 // A point in cell coordinates, off the cell lattice: x = column, y = row (0 = top), a cell's
-// centre at whole numbers. The driven route's corners once bent through gaps (path/gap_centring.hpp).
+// centre at whole numbers.
 #pragma once
 
 #include <Eigen/Core>

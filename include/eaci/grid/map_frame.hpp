@@ -46,6 +46,11 @@ struct MapFrame {
   Eigen::Vector2d pointToWorld(const CellPoint& p) const {
     return origin + Eigen::Vector2d((p.x() + 0.5) * resolution, (height - p.y() - 0.5) * resolution);
   }
+  // The world point in cell coordinates (pointToWorld's inverse); it may lie off the grid.
+  CellPoint worldToPoint(const Eigen::Vector2d& point) const {
+    const Eigen::Vector2d cells = (point - origin) / resolution;
+    return {cells.x() - 0.5, height - cells.y() - 0.5};
+  }
 };
 
 }  // namespace eaci

@@ -87,7 +87,7 @@ inline double minClearance(const CostGrid& grid, const CellPath& route) {
 // be nearer it than the best so far (within its start's clearance, bounded by the distance
 // transform, plus half its length of its middle). +infinity without obstacles or corners;
 // segments with a corner off the grid are skipped. The corners may lie off the cell centres
-// (CellPolyline: a route bent through gaps, path/gap_centring.hpp).
+// (CellPolyline, grid/cell_point.hpp).
 inline double minPolylineClearance(const CostGrid& grid, const CellPolyline& corners,
                                    const ObstacleDistances& distances) {
   const std::vector<std::uint8_t>& obstacle = distances.obstacle;

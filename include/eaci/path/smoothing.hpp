@@ -19,43 +19,10 @@
 
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/end_headings.hpp"
+#include "eaci/grid/segment_walk.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci {
-
-// The cells a straight segment between two cell centres passes through, each with the length
-// of the segment inside it (cells it only touches at a corner come with length 0), in order.
-// `visit(cell, length)` returns false to stop the walk early.
-template <class Visit>
-void traverseSegment(Cell from, Cell to, Visit&& visit) {
-  const double dx = to.col - from.col, dy = to.row - from.row;
-  const double total = std::hypot(dx, dy);
-  const int step_col = dx > 0 ? 1 : -1, step_row = dy > 0 ? 1 : -1;
-  // Parameter t in [0, 1] along the segment; cell borders lie half a cell from the centres.
-  const double t_per_col = dx != 0 ? 1.0 / std::abs(dx) : std::numeric_limits<double>::infinity();
-  const double t_per_row = dy != 0 ? 1.0 / std::abs(dy) : std::numeric_limits<double>::infinity();
-  double next_col_t = 0.5 * t_per_col, next_row_t = 0.5 * t_per_row, t = 0.0;
-  Cell cell = from;
-  constexpr double kSame = 1e-12;
-  for (;;) {
-    const double exit_t = std::min({next_col_t, next_row_t, 1.0});
-    if (!visit(cell, (exit_t - t) * total)) return;
-    if (exit_t >= 1.0) return;
-    t = exit_t;
-    if (std::abs(next_col_t - next_row_t) < kSame) {  // through a corner: both side cells are touched
-      if (!visit(Cell{cell.row, cell.col + step_col}, 0.0) || !visit(Cell{cell.row + step_row, cell.col}, 0.0)) return;
-      cell = Cell{cell.row + step_row, cell.col + step_col};
-      next_col_t += t_per_col;
-      next_row_t += t_per_row;
-    } else if (next_col_t < next_row_t) {
-      cell.col += step_col;
-      next_col_t += t_per_col;
-    } else {
-      cell.row += step_row;
-      next_row_t += t_per_row;
-    }
-  }
-}
 
 // What driving a straight segment between two cell centres costs, from one walk along it.
 struct SegmentCost {
@@ -89,30 +56,6 @@ inline SegmentCost segmentCostAndPeak(const CostGrid& grid, Cell from, Cell to,
 
 // The segment's cost alone (SegmentCost::cost).
 inline double segmentCost(const CostGrid& grid, Cell from, Cell to) { return segmentCostAndPeak(grid, from, to).cost; }
-
-// Where a straight segment between two cell centres crosses each cell: the middle of its
-// stretch inside every cell after `from` that it passes through (cells it only touches at a
-// corner are skipped), as fractions t of the segment, ending with t = 1 at `to`. Poses there
-// lie in cells that follow one another side by side, or diagonally only through a corner whose
-// two side cells the segment touches.
-inline std::vector<double> cellMidpointsAlong(Cell from, Cell to) {
-  std::vector<double> ts;
-  const double total = std::hypot(to.col - from.col, to.row - from.row);
-  if (total == 0) return ts;
-  double done = 0.0;
-  bool first = true;
-  traverseSegment(from, to, [&](Cell, double length) {
-    if (length > 0) {
-      if (!first) ts.push_back(std::min(1.0, (done + length / 2) / total));
-      first = false;
-      done += length;
-    }
-    return true;
-  });
-  if (ts.empty()) ts.push_back(1.0);
-  ts.back() = 1.0;  // the last cell's pose is its centre
-  return ts;
-}
 
 // Greedy string pulling: from each kept cell, the farthest later cell of the route reachable
 // by an allowed shortcut (the search stops at the first that is not). With `tolerance` t > 0 a

@@ -52,23 +52,10 @@ struct Parameters : ColonyParameters {
   // roundCorners), each cut by the smoother's rule with the corner it cuts off as the stretch
   // replaced (never much nearer the walls than the bend); each pass splits a corner's turn in two. 0 = off.
   int round_corners = 0;
-  // With smooth_path: cells, how far each line of the driven route may bend, off the cell
-  // lattice, at its narrowest point towards the middle of the gap it passes
-  // (path/gap_centring.hpp; never nearer the walls, never into a costlier cell). 0 = off.
-  double centre_gaps = 0.0;
   // turn_cost, the price of turning, is the colonies' too: ColonyParameters. Its unit: a free
   // cell, or the average cell of the cheapest route between start and goal
   // (planner/turn_cost_unit.hpp; plan() prices turns at turn_cost x that cell's cost).
   TurnCostUnit turn_cost_unit = TurnCostUnit::kFreeCell;
-  // The way and the route within it (planner.hpp, grid/way_corridor.hpp): with way_cost_factor
-  // > 0 the plan first finds the cheapest route (the exact search, turns priced as the plan
-  // prices them) with cost_factor = way_cost_factor, a lighter weighting of the costmap's
-  // costs that is nearer to length and turns, that is to driving time; then plans with
-  // cost_factor on the cells within way_corridor cells of it. The way (which gaps, which
-  // doors) is chosen by the lighter weighting, the route's shape within it (the middle of
-  // each gap) by cost_factor. 0 = off: one weighting for both.
-  double way_cost_factor = 0.0;
-  int way_corridor = 16;
 };
 
 // The one place parameters are checked. Returns "" when valid, else a sentence.
@@ -122,15 +109,6 @@ inline std::string validationError(const Parameters& p) {
          "stretch it replaces (got " << p.smooth_tolerance << ")";
   else if (p.round_corners < 0 || p.round_corners > 4)
     e << "round_corners must be in 0..4, the passes of corner rounding, 0 = off (got " << p.round_corners << ")";
-  else if (!finite(p.centre_gaps) || p.centre_gaps < 0 || p.centre_gaps > 4)
-    e << "centre_gaps must be a number of cells in [0, 4], how far a line may bend towards a gap's middle, 0 = off "
-         "(got " << p.centre_gaps << ")";
-  else if (!finite(p.way_cost_factor) || p.way_cost_factor < 0 || p.way_cost_factor > 1e6)
-    e << "way_cost_factor must be a number in [0, 1e6], the cost_factor that chooses the way, 0 = off (got "
-      << p.way_cost_factor << ")";
-  else if (p.way_corridor < 1 || p.way_corridor > 100)
-    e << "way_corridor must be in 1..100 cells, how far the route may stray from the way (got " << p.way_corridor
-      << ")";
   else if (p.threads < 0 || p.threads > 1024) e << "threads must be in 0..1024, 0 = all cores (got " << p.threads << ")";
   return e.str();
 }
@@ -223,7 +201,6 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"smooth_path", fieldAccess("smooth_path", &Parameters::smooth_path)},
       {"smooth_tolerance", fieldAccess("smooth_tolerance", &Parameters::smooth_tolerance)},
       {"round_corners", fieldAccess("round_corners", &Parameters::round_corners)},
-      {"centre_gaps", fieldAccess("centre_gaps", &Parameters::centre_gaps)},
       {"allow_unknown", fieldAccess("allow_unknown", &Parameters::allow_unknown)},
       {"island_strategy", wordAccess("island_strategy", &Parameters::island_strategy,
                                      {IslandStrategy::kGeodesic, IslandStrategy::kPaper})},
@@ -246,8 +223,6 @@ inline const std::map<std::string, ParameterAccess>& parameterTable() {
       {"turn_cost", fieldAccess("turn_cost", &Parameters::turn_cost)},
       {"turn_cost_unit", wordAccess("turn_cost_unit", &Parameters::turn_cost_unit,
                                     {TurnCostUnit::kFreeCell, TurnCostUnit::kRouteCell})},
-      {"way_cost_factor", fieldAccess("way_cost_factor", &Parameters::way_cost_factor)},
-      {"way_corridor", fieldAccess("way_corridor", &Parameters::way_corridor)},
   };
   return table;
 }

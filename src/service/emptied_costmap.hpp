@@ -6,8 +6,9 @@
 // track_unknown_space -- until the costmap's next update fills it, up to 1 / update_frequency
 // later. A plan in between sees no wall at all, and both navfn and a plain planner route
 // straight through walls (measured through move_base on a growing map: docs/ros.md, "A map that
-// grows"). The planning service keeps the last costmap that was filled and plans on an emptied
-// one as that one showed it, placed into the new frame (a grown map holds the old one).
+// grows"). The planning service keeps the last costmap that was filled and plans on a costmap
+// emptied by a resize as that one showed it, placed into the new frame (a grown map holds the
+// old one), while that one is recent.
 #pragma once
 
 #include <chrono>
@@ -35,24 +36,24 @@ std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eac
 class EmptiedCostmapStandIn {
  public:
   using Clock = std::chrono::steady_clock;
-  // An emptied costmap stands in for at most `max_wait` from the first plan that saw it
-  // emptied: a costmap that stays uniform longer is taken as it is (an empty map is a map).
-  explicit EmptiedCostmapStandIn(Clock::duration max_wait) : max_wait_(max_wait) {}
+  // The last filled costmap stands in only while it was read at most `max_age` ago.
+  explicit EmptiedCostmapStandIn(Clock::duration max_age) : max_age_(max_age) {}
 
   // Called with each plan's costmap before anything else reads it, and the last filled costmap
-  // the planner holds (null: none). For a filled costmap: nothing (plan on it). For an emptied
-  // one, while a filled one is held and the wait has not run out: the held one placed into its
-  // frame, to plan on instead, and `said` (else left alone) says so. Throws std::bad_alloc when
-  // the placed copy does not fit.
+  // the planner holds (null: none) with when it was read. Stands in only for a costmap that
+  // costmap_2d has emptied by a resize: uniform, and of another size, origin or resolution than
+  // the last filled one (a costmap of the same frame that is uniform -- cleared, or a world
+  // with nothing in it -- is planned on as it is), and only with data read at most max_age
+  // before `now`. Then: the held one placed into the new frame, to plan on instead, and `said`
+  // (else left alone) says so. Throws std::bad_alloc when the placed copy does not fit.
   std::optional<CostmapSnapshot> standIn(const CostmapView& costmap, const CostmapSnapshot* last_filled,
-                                         Clock::time_point now, std::string& said);
+                                         Clock::time_point last_filled_read, Clock::time_point now, std::string& said);
   // The costmap of the last standIn() was filled (not uniform).
   bool lastWasFilled() const { return filled_; }
 
  private:
-  const Clock::duration max_wait_;
+  const Clock::duration max_age_;
   bool filled_ = false;
-  std::optional<Clock::time_point> emptied_since_;  // the first plan that found the costmap emptied
 };
 
 }  // namespace eaci_service

@@ -1,4 +1,4 @@
-#include "costmap_reset.hpp"
+#include "emptied_costmap.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,22 +46,23 @@ std::optional<CostmapSnapshot> placedInto(const CostmapSnapshot& last, const eac
 
 std::optional<CostmapSnapshot> EmptiedCostmapStandIn::standIn(const CostmapView& costmap,
                                                               const CostmapSnapshot* last_filled,
-                                                              Clock::time_point now, std::string& said) {
+                                                              Clock::time_point last_filled_read, Clock::time_point now,
+                                                              std::string& said) {
   filled_ = !isUniform(costmap);
-  if (filled_) {
-    emptied_since_.reset();
-    return std::nullopt;
-  }
-  if (last_filled == nullptr) return std::nullopt;
-  if (!emptied_since_) emptied_since_ = now;
-  if (now - *emptied_since_ > max_wait_) return std::nullopt;
+  if (filled_ || last_filled == nullptr) return std::nullopt;
+  const eaci::MapFrame& a = costmap.frame;
+  const eaci::MapFrame& b = last_filled->frame;
+  const bool resized = a.width != b.width || a.height != b.height || a.resolution != b.resolution || a.origin != b.origin;
+  if (!resized || now - last_filled_read > max_age_) return std::nullopt;
   const std::uint8_t value = costmap.cells[0];
   std::optional<CostmapSnapshot> placed = placedInto(*last_filled, costmap.frame, value);
   if (!placed) return std::nullopt;
   placed->frame_id = costmap.frame_id;
   said = "the costmap (" + std::to_string(costmap.frame.width) + " x " + std::to_string(costmap.frame.height) +
-         " cells) holds " + std::to_string(value) + " in every cell: costmap_2d has emptied it (resized or cleared) "
-         "and not filled it yet; planning on the last filled costmap, placed into its frame";
+         " cells) was resized and holds " + std::to_string(value) + " in every cell: costmap_2d has emptied it and "
+         "not filled it yet; planning on the last filled costmap, read " +
+         std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(now - last_filled_read).count()) +
+         " ms ago, placed into its frame";
   return placed;
 }
 
