@@ -108,6 +108,36 @@ nav_msgs::Path toPath(const std::vector<Eigen::Vector2d>& points, const std::str
   return path;
 }
 
+visualization_msgs::MarkerArray islandMarkers(const eaci::CellPath& islands, const TfMapFrame& frame,
+                                              const ros::Time& stamp) {
+  visualization_msgs::Marker marker;
+  marker.header.frame_id = frame.frame_id;
+  marker.header.stamp = stamp;
+  marker.ns = "islands";
+  marker.id = 0;
+  marker.pose.orientation.w = 1.0;
+  if (islands.empty()) {
+    marker.action = visualization_msgs::Marker::DELETE;
+  } else {
+    marker.type = visualization_msgs::Marker::SPHERE_LIST;
+    marker.action = visualization_msgs::Marker::ADD;
+    marker.scale.x = marker.scale.y = marker.scale.z = 2.0 * frame.resolution;
+    marker.color.r = 1.0f;
+    marker.color.g = 0.55f;
+    marker.color.a = 1.0f;
+    for (const eaci::Cell& c : islands) {
+      const Eigen::Vector2d p = frame.cellToWorld(c);
+      geometry_msgs::Point point;
+      point.x = p.x();
+      point.y = p.y();
+      marker.points.push_back(point);
+    }
+  }
+  visualization_msgs::MarkerArray markers;
+  markers.markers.push_back(marker);
+  return markers;
+}
+
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp) {
   nav_msgs::OccupancyGrid grid;
   grid.header.frame_id = frame.frame_id;

@@ -4,6 +4,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cstdint>
 #include <optional>
@@ -56,6 +57,11 @@ std::vector<std::uint8_t> inflatedCostsOf(const nav_msgs::OccupancyGrid& grid, i
 nav_msgs::Path toPath(const std::vector<Eigen::Vector2d>& points, const std::string& frame_id,
                       const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                       const ros::Time& stamp, eaci::OrientationMode orientation = eaci::OrientationMode::kForward);
+
+// EACI's islands (PlanResult::islands) for RViz: one sphere list in `frame`, a sphere of two
+// cells at each island's centre, in route order; empty islands: a marker that deletes the last.
+visualization_msgs::MarkerArray islandMarkers(const eaci::CellPath& islands, const TfMapFrame& frame,
+                                              const ros::Time& stamp);
 
 // A per-cell field (row-major, row 0 = top) as an OccupancyGrid for RViz: log-scaled to 0..100.
 nav_msgs::OccupancyGrid fieldToGrid(const std::vector<double>& field, const TfMapFrame& frame, const ros::Time& stamp);

@@ -7,6 +7,7 @@
 
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cstdio>
 #include <utility>
@@ -61,6 +62,8 @@ RosPlanner::RosPlanner(const ros::NodeHandle& private_nh, Setup setup) : setup_(
   ros::NodeHandle nh(private_nh);
   plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1, setup_.latch_plan);
   pheromone_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("pheromone", 1, true);
+  grid_plan_pub_ = nh.advertise<nav_msgs::Path>("grid_plan", 1, setup_.latch_plan);
+  islands_pub_ = nh.advertise<visualization_msgs::MarkerArray>("islands", 1, setup_.latch_plan);
   make_plan_service_ = nh.advertiseService("make_plan", &RosPlanner::onMakePlan, this);
   save_costmap_service_ = nh.advertiseService("save_costmap", &RosPlanner::onSaveCostmap, this);
   ros::NodeHandle cancel_nh(private_nh);
@@ -193,6 +196,7 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
   const auto publish_start = std::chrono::steady_clock::now();
   if (reply.options.publish_plan) plan_pub_.publish(path);
   if (!reply.result.pheromone.empty()) pheromone_pub_.publish(fieldToGrid(reply.result.pheromone, frame, ros::Time::now()));
+  publishDebug(reply, frame, start, target);
   logProfile(setup_.who, reply, convert_ms, msSince(publish_start), entered);
   answer.cost = reply.result.cost;
   char line[256];
@@ -204,6 +208,18 @@ RosPlanner::Answer RosPlanner::answerFor(const PlanReply& reply, const geometry_
                 reply.stood_in_for_emptied ? "; on the last filled costmap (this one was resized and is empty)" : "");
   answer.message = line;
   return answer;
+}
+
+void RosPlanner::publishDebug(const PlanReply& reply, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
+                              const geometry_msgs::PoseStamped& goal) {
+  const ros::Time now = ros::Time::now();
+  if (grid_plan_pub_.getNumSubscribers() > 0) {  // the 8-connected route, cell centre by cell centre
+    std::vector<Eigen::Vector2d> centres;
+    centres.reserve(reply.result.path.size());
+    for (const eaci::Cell& c : reply.result.path) centres.push_back(frame.cellToWorld(c));
+    grid_plan_pub_.publish(toPath(centres, frame.frame_id, start, goal, now, eaci::OrientationMode::kForward));
+  }
+  if (islands_pub_.getNumSubscribers() > 0) islands_pub_.publish(islandMarkers(reply.result.islands, frame, now));
 }
 
 RosPlanner::Answer RosPlanner::failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept {

@@ -1,6 +1,6 @@
 // The ROS half the move_base plugin and the planner node share, around the ROS-free planning
 // service (src/service/planning_service.hpp): the parameters and dynamic_reconfigure, the ~plan
-// and ~pheromone topics, the ~make_plan, ~cancel and ~save_costmap services, poses in and a
+// topic, the debug topics ~grid_plan, ~islands and ~pheromone (made only while subscribed), the ~make_plan, ~cancel and ~save_costmap services, poses in and a
 // nav_msgs/Path out. Nothing here throws into its host: every entry point catches.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "grid_conversion.hpp"
 #include "planner_configuration.hpp"
 #include "planning_service.hpp"
 
@@ -95,6 +96,9 @@ class RosPlanner {
   PlanRequest requestFor(const geometry_msgs::PoseStamped& start, const geometry_msgs::PoseStamped& goal,
                          double tolerance) const;
   Answer failedWith(const char* what, std::vector<geometry_msgs::PoseStamped>& plan) noexcept;
+  // ~grid_plan and ~islands of `reply`, each only while it has a subscriber.
+  void publishDebug(const PlanReply& reply, const TfMapFrame& frame, const geometry_msgs::PoseStamped& start,
+                    const geometry_msgs::PoseStamped& goal);
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);
   bool onCancel(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   bool onSaveCostmap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
@@ -104,6 +108,8 @@ class RosPlanner {
   std::unique_ptr<PlannerConfiguration> config_;
   ros::Publisher plan_pub_;
   ros::Publisher pheromone_pub_;
+  ros::Publisher grid_plan_pub_;  // ~grid_plan: the route before smoothing, made only while someone listens
+  ros::Publisher islands_pub_;    // ~islands: EACI's islands as markers, the same
   ros::ServiceServer make_plan_service_;
   ros::ServiceServer save_costmap_service_;
   ros::CallbackQueue cancel_queue_;

@@ -95,6 +95,21 @@ TEST(GridConversion, PathPosesAreThePointsFacingTheNextAndEndWithTheGoalPose) {
   EXPECT_TRUE(eaci_ros::toPath({}, "map", start, goal, ros::Time(1.0)).poses.empty());
 }
 
+// The islands as one sphere list at their cells' centres, two cells wide; none: a deletion.
+TEST(GridConversion, IslandsAreOneSphereListAtTheirCentres) {
+  const auto frame = eaci_ros::frameOf(sampleGrid());
+  const auto markers = eaci_ros::islandMarkers({{2, 0}, {1, 2}}, frame, ros::Time(2.0));
+  ASSERT_EQ(markers.markers.size(), 1u);
+  const auto& m = markers.markers[0];
+  EXPECT_EQ(m.type, visualization_msgs::Marker::SPHERE_LIST);
+  EXPECT_EQ(m.header.frame_id, "map");
+  ASSERT_EQ(m.points.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.points[0].x, frame.cellToWorld({2, 0}).x());
+  EXPECT_DOUBLE_EQ(m.points[1].y, frame.cellToWorld({1, 2}).y());
+  EXPECT_DOUBLE_EQ(m.scale.x, 2.0 * frame.resolution);
+  EXPECT_EQ(eaci_ros::islandMarkers({}, frame, ros::Time(2.0)).markers[0].action, visualization_msgs::Marker::DELETE);
+}
+
 TEST(GridConversion, InflationGrowsObstaclesByTheRadius) {
   auto grid = sampleGrid();
   eaci_ros::inflateObstacles(grid, 0.5, 65);  // one cell

@@ -1,9 +1,16 @@
 // Talks to a running eaci_planner_node (see planner_node.test) through its make_plan service.
 #include <gtest/gtest.h>
 #include <nav_msgs/GetPlan.h>
+#include <nav_msgs/Path.h>
+#include <visualization_msgs/MarkerArray.h>
 #include <ros/ros.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <mutex>
+#include <thread>
+#include <functional>
 #include <initializer_list>
 #include <string>
 
@@ -89,6 +96,66 @@ TEST_F(PlannerNode, PlansACollisionFreeRouteAcrossTheLab) {
   // The straight line is 4.47 m; the U-shaped obstacle lies across it.
   EXPECT_GT(length, std::hypot(4.0, 2.2));
   EXPECT_LT(length, 1.2 * 4.9113);  // A* optimum on this map: 98.2254 cells = 4.9113 m
+}
+
+// What it planned, to see in RViz: ~grid_plan, the route before smoothing, and ~islands, EACI's
+// islands, made only while someone listens. Both are latched: a plan asked before anyone
+// subscribed leaves nothing for a late subscriber (nothing was made); with one, the grid route
+// runs cell by cell (8-neighbour steps between free cells from the start's cell to the goal's)
+// and the islands lie on free cells. (Start and goal inside their cells: 0.4 m lies on a cell
+// border, which the node's float resolution puts in the cell below.)
+TEST_F(PlannerNode, TheGridRouteAndTheIslandsArePublishedOnlyWhileSomeoneListens) {
+  ASSERT_GE(plan(mapPose(0.42, 0.43), mapPose(4.38, 2.62)).plan.poses.size(), 2u);  // nobody listens yet
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  nav_msgs::Path grid_plan;
+  visualization_msgs::MarkerArray islands;
+  std::atomic<int> grid_plans{0}, island_arrays{0};
+  const auto on_path = [&](const nav_msgs::Path::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex);
+    grid_plan = *m;
+    ++grid_plans;
+  };
+  const auto on_islands = [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex);
+    islands = *m;
+    ++island_arrays;
+  };
+  ros::Subscriber path_sub = nh.subscribe<nav_msgs::Path>("/eaci_planner_node/grid_plan", 1, on_path);
+  ros::Subscriber islands_sub = nh.subscribe<visualization_msgs::MarkerArray>("/eaci_planner_node/islands", 1, on_islands);
+  const auto wait_until = [](const std::function<bool()>& done, double seconds) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (!done() && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return done();
+  };
+  ASSERT_TRUE(wait_until([&] { return path_sub.getNumPublishers() > 0 && islands_sub.getNumPublishers() > 0; }, 10.0));
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  EXPECT_EQ(grid_plans.load(), 0) << "a grid route was made while nobody listened";
+  EXPECT_EQ(island_arrays.load(), 0) << "islands were made while nobody listened";
+
+  ASSERT_GE(plan(mapPose(0.42, 0.43), mapPose(4.38, 2.62)).plan.poses.size(), 2u);
+  ASSERT_TRUE(wait_until([&] { return grid_plans.load() > 0 && island_arrays.load() > 0; }, 10.0));
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(grid_plan.header.frame_id, "map");
+  ASSERT_GE(grid_plan.poses.size(), 2u);
+  const auto cell_of = [&](const geometry_msgs::PoseStamped& p) {
+    return map_.worldToCell({p.pose.position.x, p.pose.position.y});
+  };
+  EXPECT_EQ(*cell_of(grid_plan.poses.front()), *map_.worldToCell({0.42, 0.43}));
+  EXPECT_EQ(*cell_of(grid_plan.poses.back()), *map_.worldToCell({4.38, 2.62}));
+  for (std::size_t k = 0; k < grid_plan.poses.size(); ++k) {
+    const auto& p = grid_plan.poses[k].pose.position;
+    EXPECT_TRUE(freeAt(p.x, p.y)) << "grid pose " << k;
+    if (k == 0) continue;
+    const eaci::Cell a = *cell_of(grid_plan.poses[k - 1]), b = *cell_of(grid_plan.poses[k]);
+    EXPECT_LE(std::max(std::abs(a.row - b.row), std::abs(a.col - b.col)), 1) << "grid pose " << k;
+  }
+  ASSERT_EQ(islands.markers.size(), 1u);
+  const visualization_msgs::Marker& marker = islands.markers.front();
+  EXPECT_EQ(marker.type, visualization_msgs::Marker::SPHERE_LIST);
+  EXPECT_EQ(marker.header.frame_id, "map");
+  EXPECT_GE(marker.points.size(), 2u);  // start and goal at least
+  for (const auto& point : marker.points) EXPECT_TRUE(freeAt(point.x, point.y)) << point.x << ", " << point.y;
 }
 
 // Each bad request fails for its own reason: the node's line holds the outcome's word ("no plan
