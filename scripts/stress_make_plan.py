@@ -11,6 +11,13 @@ call has been waiting for longer than --watchdog seconds, or move_base's own pla
 while a goal is being driven. Every plan must be valid: no pose on an occupied cell of the map
 image, no jump longer than --max-step between poses. move_base's resident memory is sampled
 every 10 s.
+
+With --costmap-check the plans are checked against the global costmap too, as move_base
+publishes it (/move_base/global_costmap/costmap and its updates; publish it as often as it
+updates): no segment between two poses of a plan may cross a cell that the costmap showed
+lethal both before the plan was asked for and after it came back (so lethal while it was made),
+for the two services' plans and move_base's own (its plans published on the plugin's ~plan).
+For a costmap whose obstacles move (config/moving_obstacle_costmap.yaml, scripts/moving_obstacle.py).
     /usr/bin/python3 scripts/stress_make_plan.py --duration 600 --json stress.json
 Exit 0: no hang, every plan valid; 1: an invalid plan; 2: a hang.
 """
@@ -23,8 +30,11 @@ import sys
 import threading
 import time
 
+import numpy
 import rospy
 from actionlib_msgs.msg import GoalStatusArray
+from map_msgs.msg import OccupancyGridUpdate
+from nav_msgs.msg import OccupancyGrid
 from nav_msgs.msg import Path
 from nav_msgs.srv import GetPlan
 from std_srvs.srv import Trigger
@@ -32,6 +42,65 @@ from std_srvs.srv import Trigger
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from drive_goals import resident_kib  # noqa: E402
 from probe_make_plan import MapImage, pose  # noqa: E402
+
+
+class CostmapHistory:
+    """The global costmap as move_base publishes it (costmap_2d's 0..100 scale: 100 lethal), its
+    last few seconds kept: lethal(t0, t1) is the cells lethal in the costmap held at t0 and in
+    the one held at t1."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.info = None
+        self.grid = None
+        self.history = []  # (monotonic time, lethal mask), newest last
+
+    def _keep(self):
+        now = time.monotonic()
+        self.history.append((now, self.grid == 100))
+        while self.history and now - self.history[0][0] > 5.0:
+            self.history.pop(0)
+
+    def on_full(self, message):
+        with self.lock:
+            self.info = message.info
+            self.grid = numpy.array(message.data, dtype=numpy.int8).reshape(message.info.height, message.info.width)
+            self._keep()
+
+    def on_update(self, message):
+        with self.lock:
+            if self.grid is None:
+                return
+            block = numpy.array(message.data, dtype=numpy.int8).reshape(message.height, message.width)
+            self.grid[message.y:message.y + message.height, message.x:message.x + message.width] = block
+            self._keep()
+
+    def held_at(self, t):
+        """The lethal mask held at monotonic time t (the newest received before it), or None."""
+        with self.lock:
+            held = None
+            for received, mask in self.history:
+                if received <= t:
+                    held = mask
+            return held
+
+    def crossing(self, poses, before, after):
+        """A sentence when a segment between two poses crosses a cell lethal at both times, else None."""
+        a, b = self.held_at(before), self.held_at(after)
+        if a is None or b is None or a.shape != b.shape:
+            return None
+        lethal = a & b
+        info = self.info
+        res, ox, oy = info.resolution, info.origin.position.x, info.origin.position.y
+        points = [(p.pose.position.x, p.pose.position.y) for p in poses]
+        for k, ((x0, y0), (x1, y1)) in enumerate(zip(points, points[1:])):
+            samples = max(1, int(math.ceil(math.hypot(x1 - x0, y1 - y0) / res * 20)))
+            for i in range(samples + 1):
+                x, y = x0 + (x1 - x0) * i / samples, y0 + (y1 - y0) * i / samples
+                col, row = int(math.floor((x - ox) / res)), int(math.floor((y - oy) / res))  # row from the bottom
+                if 0 <= row < lethal.shape[0] and 0 <= col < lethal.shape[1] and lethal[row, col]:
+                    return "segment %d crosses the lethal cell (%d, %d) at (%.3f, %.3f)" % (k + 1, col, row, x, y)
+        return None
 
 
 class Stress:
@@ -42,15 +111,31 @@ class Stress:
         self.stats = {}      # service -> counts and times
         self.invalid = []
         self.move_base_plans = []  # times of the plugin's published plans (move_base's and ours)
+        self.costmap = CostmapHistory() if args.costmap_check else None
+        self.costmap_checked = {}  # service -> plans checked against the costmap
         self.goal_active_since = None
         self.memory = []
         free_rows, free_cols = (self.image.distance >= args.min_obstacle_distance).nonzero()
         self.free = list(zip(free_rows.tolist(), free_cols.tolist()))
         self.stop = threading.Event()
 
-    def on_plan(self, _):
+    def on_plan(self, message):
+        now = time.monotonic()
         with self.lock:
-            self.move_base_plans.append(time.monotonic())
+            self.move_base_plans.append(now)
+        if self.costmap is not None and message.poses:
+            # Published when made: the costmap a tenth of a second before and when it arrives.
+            self.costmap_check("~plan", message.poses, now - 0.1 - self.args.plan_age, now)
+
+    def costmap_check(self, service, poses, before, after):
+        crossing = self.costmap.crossing(poses, before, after)
+        checked = self.costmap.held_at(before) is not None
+        with self.lock:
+            self.costmap_checked[service] = self.costmap_checked.get(service, 0) + (1 if checked else 0)
+            if crossing:
+                self.invalid.append({"service": service, "defect": crossing})
+        if crossing:
+            rospy.logerr("plan from %s through the costmap: %s", service, crossing)
 
     def on_status(self, message):
         active = any(s.status == 1 for s in message.status_list)  # ACTIVE
@@ -95,6 +180,8 @@ class Stress:
             stats["seconds"].append(time.monotonic() - begin)
             if poses:
                 stats["plans"] += 1
+                if self.costmap is not None:
+                    self.costmap_check(service, poses, begin, time.monotonic())
                 defect = self.check(poses)
                 if defect:
                     self.invalid.append({"service": service, "start": start, "goal": goal, "defect": defect})
@@ -140,6 +227,10 @@ def main():
     parser.add_argument("--min-obstacle-distance", type=float, default=0.12, help="m, random starts and goals")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--json", help="write the counts, times and memory samples here")
+    parser.add_argument("--costmap-check", action="store_true",
+                        help="check every plan against the global costmap as published (see above)")
+    parser.add_argument("--plan-age", type=float, default=0.1,
+                        help="s: how long before its ~plan message a plan of move_base's may have started")
     args = parser.parse_args()
     rospy.init_node("stress_make_plan", anonymous=True, disable_signals=True)
     image = MapImage(args.map)
@@ -148,6 +239,10 @@ def main():
         rospy.wait_for_service(service, timeout=60)
     rospy.Subscriber("/move_base/EaciGlobalPlanner/plan", Path, stress.on_plan, queue_size=100)
     rospy.Subscriber("/move_base/status", GoalStatusArray, stress.on_status, queue_size=10)
+    if stress.costmap is not None:
+        rospy.Subscriber("/move_base/global_costmap/costmap", OccupancyGrid, stress.costmap.on_full, queue_size=5)
+        rospy.Subscriber("/move_base/global_costmap/costmap_updates", OccupancyGridUpdate, stress.costmap.on_update,
+                         queue_size=50)
     rng = random.Random(args.seed)
     threads = [threading.Thread(target=stress.caller, args=(s, random.Random(rng.random())), name=s, daemon=True)
                for s in ("/move_base/make_plan", "/move_base/EaciGlobalPlanner/make_plan")]
@@ -180,6 +275,7 @@ def main():
                                                         "max": max(v) if v else None})
                          for k, v in st.items()} for s, st in stress.stats.items()},
         "memory_kib": stress.memory,
+        "costmap_checked": stress.costmap_checked,
     }
     print(json.dumps(summary, indent=1))
     if args.json:
