@@ -6,7 +6,7 @@
 # --rounds rounds of the goals; then the per-goal comparison over all runs (drive_goals.py
 # --compare; the first planner is the reference). Needs the navigation stack (move_base,
 # map_server, navfn, dwa_local_planner) and the plugin: source the project's devel or install
-# space and the navigation workspace first (docs/ros.md, "Driving to the lab goals").
+# space and the navigation workspace first (docs/ros.md; docs/notebook/2026-12-01-driving-to-the-lab-goals.md).
 #
 # Usage: scripts/drive_compare.sh [--runs N] [--rounds R] [--out DIR] [--map YAML] [--goals "x,y;x,y"]
 #                                 [--start x,y[,yaw]] [LABEL=PLANNER[@PARAMS.yaml] ...]

@@ -7,7 +7,7 @@ the seconds it spent below 0.2 m/s (speed averaged over 0.5 s) in the stretch th
 and every other slow stretch of 0.3 s or more on the way (where, and how long: at the start, a
 turn in place; on the way, a bend taken slowly); and how far the car drove to the goal (two routes
 that cost about the same to a planner can differ by half a metre on the floor).
-A car that arrives far off the goal's yaw crawls and turns there (docs/ros.md, "Arriving lined up").
+A car that arrives far off the goal's yaw crawls and turns there (docs/notebook/2026-12-05-drive-tuning-beside-navfn.md, "Arriving lined up").
 
 Usage:
     python3 scripts/goal_approach.py [--goals "x,y;x,y"] [--start x,y] TRACE.csv [TRACE.csv ...]

@@ -7,7 +7,7 @@ cancels the goal S seconds after sending it and prints how long the CANCELED res
       [--frame map] [--planner eaci] [--action /move_base_flex/get_path] [--cancel-after 1.0]
       [--expect CODE]   (exit 1 unless the outcome is CODE; names as in mbf_msgs/GetPathResult)
 
-One line of key=value pairs on stdout (docs/ros.md, "Move Base Flex", lists the runs).
+One line of key=value pairs on stdout (docs/notebook/2026-12-03-behind-move-base-flex.md lists the runs).
 """
 import argparse
 import sys
@@ -21,7 +21,7 @@ from mbf_msgs.msg import GetPathAction, GetPathGoal, GetPathResult
 # mbf_msgs/GetPathResult's named codes, and the plugin's own (src/ros/mbf_outcome.hpp).
 CODE_NAMES = {getattr(GetPathResult, n): n for n in dir(GetPathResult)
               if n.isupper() and isinstance(getattr(GetPathResult, n), int)}
-CODE_NAMES.update({71: 'EACI_GOAL_OFF_MAP', 72: 'EACI_BAD_PARAMETERS'})
+CODE_NAMES.update({72: 'EACI_BAD_PARAMETERS'})
 NAME_CODES = {v: k for k, v in CODE_NAMES.items()}
 
 

@@ -5,8 +5,7 @@
 // cell then holds the default value -- FREE_SPACE, or NO_INFORMATION with the costmap's own
 // track_unknown_space -- until the costmap's next update fills it, up to 1 / update_frequency
 // later. A plan in between sees no wall at all, and both navfn and a plain planner route
-// straight through walls (measured through move_base on a growing map: docs/ros.md, "A map that
-// grows"). The planning service keeps the last costmap that was filled and plans on a costmap
+// straight through walls (measured through move_base on a growing map: docs/notebook/2026-12-03-a-map-that-grows.md). The planning service keeps the last costmap that was filled and plans on a costmap
 // emptied by a resize as that one showed it, placed into the new frame (a grown map holds the
 // old one), while that one is recent.
 #pragma once

@@ -41,7 +41,7 @@ struct RosPlannerOptions {
 // stopping after 10 iterations without a cheaper route or once within 1 % of the cheapest
 // route (stop_gap 0.01), ants within 4 moves of the cheapest route (region_margin 4); one
 // thread, as the core's default, so a plan leaves the other cores to the controller and SLAM
-// (two threads saved 10-14 % of a plan on 1600 x 1600 cells, docs/ros.md). With
+// (two threads saved 10-14 % of a plan on 1600 x 1600 cells, docs/notebook/2026-12-03-concurrency-time-limit-threads.md). With
 // RosPlannerOptions{} (max_planning_time 1 s) these are what one line of configuration plans
 // with; config/eaci_planner.yaml is exactly these values (test_planning_service checks it). The
 // paper's own protocol (every iteration) is config/paper_benchmark.yaml and the core's

@@ -48,6 +48,24 @@ PlanOutcome outcomeOf(eaci::PlanStatus status, bool goal_free) {
 // buffers (a few tens of bytes a cell) must fit a robot's memory.
 constexpr std::size_t kMaxCostmapCells = eaci::kMaxGridCells;
 
+// Why `costmap` cannot be planned on (empty, an unusable frame, over the cap, a copy that does
+// not hold the cells it claims, no cells), or "".
+std::string costmapProblem(const CostmapView& costmap) {
+  const eaci::MapFrame& frame = costmap.frame;
+  if (frame.width <= 0 || frame.height <= 0) return "the costmap is empty (" + sizeOf(frame) + ")";
+  if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
+    return "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable";
+  const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
+  if (cell_count > kMaxCostmapCells)
+    return "the costmap of " + sizeOf(frame) + " is larger than the planner's cap of " +
+           std::to_string(kMaxCostmapCells) + " cells";
+  if (costmap.cells_held != CostmapView::kUnchecked && costmap.cells_held != cell_count)
+    return "the costmap copy holds " + std::to_string(costmap.cells_held) + " cells, not the " + sizeOf(frame) +
+           " it claims";
+  if (costmap.cells == nullptr) return "the costmap of " + sizeOf(frame) + " came without its cells";
+  return "";
+}
+
 }  // namespace
 
 const char* toString(StopReason reason) {
@@ -285,21 +303,8 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   const auto stop_outcome = [&] { return stoppedOutcome(static_cast<StopReason>(stop_reason.load())); };
 
   const eaci::MapFrame& frame = costmap.frame;
-  if (frame.width <= 0 || frame.height <= 0)
-    return failure(PlanOutcome::kBadCostmap, "the costmap is empty (" + sizeOf(frame) + ")");
-  if (!std::isfinite(frame.resolution) || !(frame.resolution > 0) || !frame.origin.allFinite())
-    return failure(PlanOutcome::kBadCostmap,
-                   "the costmap's resolution " + eaci::formatNumber(frame.resolution) + " m or origin is not usable");
-  const std::size_t cell_count = static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
-  if (cell_count > kMaxCostmapCells)
-    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) +
-                                                 " is larger than the planner's cap of " +
-                                                 std::to_string(kMaxCostmapCells) + " cells");
-  if (costmap.cells_held != CostmapView::kUnchecked && costmap.cells_held != cell_count)
-    return failure(PlanOutcome::kBadCostmap, "the costmap copy holds " + std::to_string(costmap.cells_held) +
-                                                 " cells, not the " + sizeOf(frame) + " it claims");
-  if (costmap.cells == nullptr)
-    return failure(PlanOutcome::kBadCostmap, "the costmap of " + sizeOf(frame) + " came without its cells");
+  if (const std::string problem = costmapProblem(costmap); !problem.empty())
+    return failure(PlanOutcome::kBadCostmap, problem);
   if (const std::string invalid = eaci::validationError(params); !invalid.empty())
     return failure(PlanOutcome::kBadParameters, "invalid parameter: " + invalid);
   eaci::CellInterpretation interpretation =

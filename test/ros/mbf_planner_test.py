@@ -24,7 +24,7 @@ FAR_GOAL = (48.0, 48.0)
 BLOCK = (2.0, 2.0)          # the middle of the solid 1 m block
 OFF_MAP = (-1.0, -1.0)
 ROOM = (4.8, 3.6)           # free, inside the closed room
-CANCEL_LATENCY_LIMIT = 0.25  # s; measured a few ms (docs/ros.md)
+CANCEL_LATENCY_LIMIT = 0.25  # s; measured a few ms (docs/notebook/2026-12-03-behind-move-base-flex.md)
 
 
 def pose(xy):

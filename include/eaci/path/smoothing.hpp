@@ -6,8 +6,7 @@
 // grid route (on a map without costs only the first two conditions bite). The rule measures
 // cells: a line may pass up to 0.7 cell nearer a wall than the centres of the cells it passes
 // (minPolylineClearance, metrics/path_metrics.hpp, measures the lines; a bound on the costs
-// interpolated between the centres was tried and not taken: docs/ros.md, "A longer lead into
-// the goal"). A tolerance (the smooth_tolerance parameter) relaxes the last two by a factor, below.
+// interpolated between the centres was tried and not taken: docs/notebook/2026-12-05-drive-tuning-beside-navfn.md). A tolerance (the smooth_tolerance parameter) relaxes the last two by a factor, below.
 #pragma once
 
 #include <algorithm>
@@ -173,8 +172,7 @@ inline constexpr double kBendCornerSpacing = 3.0;
 // the largest allowed of d_max, d_max / 2, d_max / 4, ... down to one cell, d_max = min(|v_i p|,
 // |v_j n| / 2) (|v_i p| is what the previous cut left of that segment; half of v_j n is left
 // for the next bend). A pass splits a bend's turn in two (90 degrees become two corners of
-// about 45), which a car takes with less slowing than one sharp bend (docs/ros.md, "Driving to
-// the lab goals"). Start and goal stay. `stop` is ticked by the cells each try walks; once it
+// about 45), which a car takes with less slowing than one sharp bend (docs/notebook/2026-12-01-driving-to-the-lab-goals.md). Start and goal stay. `stop` is ticked by the cells each try walks; once it
 // says stop the rest stays as it is. `keep_last_leg` (a goal heading is priced: smoothRoute)
 // leaves the bend before the goal as it is, so the route arrives along its whole last leg and
 // not along a cut that shortens it.
