@@ -19,7 +19,7 @@ if [ "$what" = asan ] || [ "$what" = all ]; then
   echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer (build/asan)"
   configure build/asan address,undefined
   cmake --build build/asan -j"$jobs" --target eaci_tests eaci_plan test_planning_service \
-    test_planning_service_memory test_costmap_replay test_route_defect test_costmap_reset test_costmap_mirror
+    test_planning_service_memory test_costmap_replay test_route_defect test_emptied_costmap test_costmap_source test_costmap_mirror
   # Wall-clock checks (the 1 ms limit on 4 M cells) belong to the plain build.
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build/asan --output-on-failure -j"$jobs" -E '^PaperMaps\.|OneMillisecondLimit'
