@@ -14,8 +14,9 @@ every 10 s.
 
 With --costmap-check the plans are checked against the global costmap too, as move_base
 publishes it (/move_base/global_costmap/costmap and its updates; publish it as often as it
-updates): no segment between two poses of a plan may cross a cell that the costmap showed
-lethal both before the plan was asked for and after it came back (so lethal while it was made),
+updates): no segment between two poses of a plan may cross a cell that every costmap held from
+before the plan was asked for until it came back showed lethal (so lethal while it was made: a
+cell at a moving obstacle's edge that one scan marks and the next clears is not),
 for the two services' plans and move_base's own (its plans published on the plugin's ~plan).
 For a costmap whose obstacles move (config/moving_obstacle_costmap.yaml, scripts/moving_obstacle.py).
     /usr/bin/python3 scripts/stress_make_plan.py --duration 600 --json stress.json
@@ -84,12 +85,27 @@ class CostmapHistory:
                     held = mask
             return held
 
+    def lethal_throughout(self, before, after):
+        """The cells lethal in every costmap held from `before` to `after`, or None."""
+        with self.lock:
+            masks = [mask for received, mask in self.history if received <= after]
+            first = max((k for k, (received, _) in enumerate(self.history[:len(masks)]) if received <= before),
+                        default=None)
+            if first is None:
+                return None
+            masks = masks[first:]
+            if any(m.shape != masks[0].shape for m in masks):
+                return None
+            lethal = masks[0].copy()
+            for m in masks[1:]:
+                lethal &= m
+            return lethal
+
     def crossing(self, poses, before, after):
-        """A sentence when a segment between two poses crosses a cell lethal at both times, else None."""
-        a, b = self.held_at(before), self.held_at(after)
-        if a is None or b is None or a.shape != b.shape:
+        """A sentence when a segment between two poses crosses a cell lethal throughout, else None."""
+        lethal = self.lethal_throughout(before, after)
+        if lethal is None:
             return None
-        lethal = a & b
         info = self.info
         res, ox, oy = info.resolution, info.origin.position.x, info.origin.position.y
         points = [(p.pose.position.x, p.pose.position.y) for p in poses]

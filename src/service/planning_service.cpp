@@ -428,8 +428,8 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
   reply.poses = finished.poses;
   reply.sent_grid_route = finished.grid_route;
   const bool colony_replaced = std::isfinite(reply.result.colony_combined_cost);
-  if (colony_replaced)
-    say(LogLevel::kInfo, "the colony's best route scored " + eaci::formatNumber(reply.result.colony_combined_cost) +
+  if (colony_replaced)  // the usual case on a robot (docs/ros.md, "What a robot gets"): at DEBUG
+    say(LogLevel::kDebug, "the colony's best route scored " + eaci::formatNumber(reply.result.colony_combined_cost) +
                              ", worse than the cheapest route the islands sit on: sending that route");
   if (reply.stopped_by != StopReason::kNone)
     say(LogLevel::kInfo, std::string(toString(reply.stopped_by)) + " after " +
