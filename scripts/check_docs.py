@@ -9,7 +9,8 @@ one line each (file:line: problem), every
   - repository path in backticks (include/, src/, test/, scripts/, config/, launch/, cfg/, maps/,
     docs/, microbench/, fuzz/; {a,b} and * expanded) that does not exist, and every source file
     named in backticks without its folder (`route_finish.cpp`) that no folder holds;
-  - path of a developer's machine (/tmp/, /home/, /root/, /work/, ../shared);
+  - path of a developer's machine (/tmp/, /home/, /root/, /work/), and any relative path that
+    climbs out of the repository (a user's clone holds nothing beside it);
   - issue number ("issue #12", "#12"): say what it was instead (not inside the tables
     scripts/bench_report.py generates, between <!-- generated: NAME --> and <!-- end -->).
 Exit status 0 when there is none, 1 when there is any, 2 for a bad invocation.
@@ -37,7 +38,9 @@ BARE_SOURCE = re.compile(r"(?<![\w./$<-])[\w-]+(?:%s)\b(?![\w/])" % "|".join(re.
 CITATION = re.compile(r"(?<![\w.:/])([A-Z][A-Za-z0-9]*)\.([A-Z][A-Za-z0-9_]*)?([*…])?(?![\w.(])")
 # A name shaped like a test's: at least three capitalised words (TheAuditFindsAChange...).
 TEST_SHAPED = re.compile(r"^[A-Z][a-z0-9]+(?:[A-Z0-9][a-z0-9]*){2,}$")
-MACHINE_PATH = re.compile(r"(?<![\w.~-])(?:/tmp/|/home/|/root/|/work/)|\.\./shared")
+MACHINE_PATH = re.compile(r"(?<![\w.~-])(?:/tmp/|/home/|/root/|/work/)")
+# A relative path: "../" steps, then the first name after them.
+RELATIVE_UP = re.compile(r"(?<![\w.~/-])((?:\.\./)+)([\w.-]+)")
 ISSUE = re.compile(r"\b[Ii]ssues?\s+#\d+|(?<![\w&/#\[(])#\d+\b")
 FENCE = re.compile(r"^\s*(```|~~~)")
 GENERATED_START = re.compile(r"^\s*<!-- generated: .*-->")
@@ -149,6 +152,11 @@ def check(root):
             for match in MACHINE_PATH.finditer(line):
                 problems.append(where + "a path of a developer's machine (%s...): use a path in the repository, "
                                 "or out/ made by a command given here" % match.group(0))
+            for match in RELATIVE_UP.finditer(line):
+                target = os.path.normpath(os.path.join(os.path.dirname(doc), match.group(1), match.group(2)))
+                if os.path.relpath(target, root).startswith(os.pardir):
+                    problems.append(where + "a path outside the repository (%s): a user's clone has nothing "
+                                    "beside it" % match.group(0))
             # The words of a generated block are scripts/bench_report.py's (its tables are kept as
             # generated): issue numbers are not checked there; tests and paths are.
             for match in ([] if generated else ISSUE.finditer(line)):

@@ -23,7 +23,6 @@ CostmapSource::Read CostmapSource::read(const CostmapView& costmap, const Costma
       placed = emptied_.standIn(costmap, mirror_filled_ ? &mirror_.costmap() : nullptr, filled_read_, now, said);
       if (placed && said != emptied_said_) say_(said, false);
       emptied_said_ = placed ? said : "";
-      read.stand_in_sentence = said;
     }
     if (placed) {
       read.mirror = &stood_in_;

@@ -42,7 +42,6 @@ class CostmapSource {
     CostmapMirror* mirror = nullptr;  // the copy the plan reads (the start's way out may be opened in it)
     CostmapMirror::Sync synced;
     bool stood_in = false;            // the last filled costmap stands in for an emptied one
-    std::string stand_in_sentence;    // what the stand-in is, when it stood in
   };
   // The copy brought up to `costmap` (every cell valid for the call) as the keeper's `changes`
   // and the trust above allow, read as given; `rolling`: a costmap that moves with the robot
