@@ -141,7 +141,8 @@ RosPlanner::Answer RosPlanner::plan(const geometry_msgs::PoseStamped& start, con
   const auto entered = std::chrono::steady_clock::now();
   plan.clear();
   try {
-    const PlanRequest request = requestFor(start, goal, tolerance);
+    PlanRequest request = requestFor(start, goal, tolerance);
+    request.called_at = entered;  // max_planning_time bounds the whole call, the costmap's lock and copy included
     std::optional<Answer> refused;
     PlanReply reply;
     try {
@@ -261,7 +262,9 @@ bool RosPlanner::onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPl
     }
     // The request's own tolerance when > 0, else default_tolerance. A copy: the service that
     // asks holds no costmap lock, and the costmap goes on updating while this plans.
-    const PlanReply reply = service_->plan(costmap, requestFor(start, goal, request.tolerance > 0 ? request.tolerance : -1.0));
+    PlanRequest plan_request = requestFor(start, goal, request.tolerance > 0 ? request.tolerance : -1.0);
+    plan_request.called_at = entered;  // max_planning_time bounds the whole call, the copy included
+    const PlanReply reply = service_->plan(costmap, plan_request);
     answerFor(reply, start, goal, response.plan.poses, true, entered);
   } catch (const std::exception& e) {
     failedWith(e.what(), response.plan.poses);

@@ -23,18 +23,31 @@ bool CostmapMirror::sameSetting(const CostmapView& costmap, const eaci::CellInte
          grid_.costRule().cost_factor == rule.cost_factor;
 }
 
-void CostmapMirror::makeAfresh(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
-                               bool allow_corner_cutting, eaci::CostRule rule) {
+void CostmapMirror::beginAfresh(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
+                                bool allow_corner_cutting, eaci::CostRule rule) {
   made_ = false;
+  rows_made_ = 0;
   opened_.clear();
   copy_.frame = costmap.frame;
   copy_.order = costmap.order;
-  copy_.cells.assign(costmap.cells, costmap.cells + costmap.cellCount());  // keeps its memory when large enough
+  copy_.cells.resize(costmap.cellCount());  // keeps its memory when large enough
   interpretation_ = interpretation;
   cell_byte_ = eaci::CostGrid::cellByteTable(interpretation);
   grid_.reset(costmap.frame.width, costmap.frame.height, allow_corner_cutting, rule);
-  grid_.assignRows(view(), 0, costmap.frame.height);
   made_ = true;
+}
+
+bool CostmapMirror::makeRows(const CostmapView& costmap, eaci::StopPoll& poll) {
+  const int width = costmap.frame.width, height = costmap.frame.height;
+  for (; rows_made_ < height; ++rows_made_) {
+    if (poll.stopped()) return false;
+    const std::size_t at = static_cast<std::size_t>(rows_made_) * static_cast<std::size_t>(width);
+    std::memcpy(copy_.cells.data() + at, costmap.cells + at, static_cast<std::size_t>(width));
+    const int row = gridRow(rows_made_);
+    grid_.assignRect(view(), cell_byte_, row, row + 1, 0, width);
+    poll.tick(static_cast<std::size_t>(width));
+  }
+  return true;
 }
 
 bool CostmapMirror::syncRow(const CostmapView& costmap, int y, int x0, int x1) {
@@ -50,33 +63,60 @@ bool CostmapMirror::syncRow(const CostmapView& costmap, int y, int x0, int x1) {
 
 CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const CostmapChanges& changes,
                                         const eaci::CellInterpretation& interpretation, bool allow_corner_cutting,
-                                        eaci::CostRule rule) {
+                                        eaci::CostRule rule, const std::function<bool()>& should_stop) {
   Sync done;
-  copy_.frame_id = costmap.frame_id;
-  if (!sameSetting(costmap, interpretation, allow_corner_cutting, rule)) {
-    try {
-      makeAfresh(costmap, interpretation, allow_corner_cutting, rule);
-    } catch (...) {
-      clear();
-      throw;
+  const int width = costmap.frame.width, height = costmap.frame.height;
+  eaci::StopPoll poll(should_stop, 0, kBytesBetweenStopChecks);  // ticked with the bytes of each row read
+  try {
+    copy_.frame_id = costmap.frame_id;
+    const bool same = sameSetting(costmap, interpretation, allow_corner_cutting, rule);
+    if (!same || rows_made_ < height) {  // a new copy, or one a stop left part made
+      if (!same) {
+        beginAfresh(costmap, interpretation, allow_corner_cutting, rule);
+      } else {  // the rows made before the stop, compared: nothing is known of what changed since
+        restore();
+        for (int y = 0; y < rows_made_ && !poll.stopped(); ++y) {
+          done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
+          poll.tick(static_cast<std::size_t>(width));
+        }
+      }
+      const int before = rows_made_;
+      done.stopped = poll.stopped() || !makeRows(costmap, poll);
+      done.afresh = true;
+      done.rows_read = static_cast<std::size_t>(rows_made_);
+      done.rows_changed += static_cast<std::size_t>(rows_made_ - before);
+      return done;
     }
-    done.afresh = true;
-    done.rows_read = done.rows_changed = static_cast<std::size_t>(costmap.frame.height);
-    return done;
+  } catch (...) {
+    clear();
+    throw;
   }
   restore();
-  const int width = costmap.frame.width, height = costmap.frame.height;
   if (!changes.known) {
-    for (int y = 0; y < height; ++y) done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
-    done.rows_read = static_cast<std::size_t>(height);
+    for (int y = 0; y < height; ++y) {
+      if (poll.stopped()) {
+        done.stopped = true;
+        return done;
+      }
+      done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
+      ++done.rows_read;
+      poll.tick(static_cast<std::size_t>(width));
+    }
     return done;
   }
   for (const BufferRect& rect : changes.rects) {
     const int x0 = std::max(0, rect.x0), x1 = std::min(width, rect.x1);
     const int y0 = std::max(0, rect.y0), y1 = std::min(height, rect.y1);
     if (x0 >= x1) continue;
-    for (int y = y0; y < y1; ++y) done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
-    done.rows_read += static_cast<std::size_t>(std::max(0, y1 - y0));
+    for (int y = y0; y < y1; ++y) {
+      if (poll.stopped()) {
+        done.stopped = true;
+        return done;
+      }
+      done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
+      ++done.rows_read;
+      poll.tick(static_cast<std::size_t>(x1 - x0));
+    }
   }
   const std::size_t audit_rows =
       std::min(static_cast<std::size_t>(height), std::max<std::size_t>(1, audit_bytes_ / static_cast<std::size_t>(width)));
@@ -113,6 +153,7 @@ void CostmapMirror::restore() {
 
 void CostmapMirror::clear() {
   made_ = false;
+  rows_made_ = 0;
   opened_.clear();
   copy_ = CostmapSnapshot{};
   grid_ = eaci::CostGrid{};

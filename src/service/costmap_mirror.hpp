@@ -10,18 +10,23 @@
 // rows that differ; the grid numbers each change by row (CostGrid::rowChange),
 // so the landmarks are checked again only where it changed (LandmarkCache). A new size,
 // origin, resolution, row order, interpretation or move rule makes both afresh (their memory
-// is kept when large enough).
+// is kept when large enough). A sync asks `should_stop` between blocks of rows (a plan's time
+// limit counts from the caller's entry, the first copy of a large costmap included): stopped,
+// the copy keeps the rows made so far and the next sync, which must then compare every row,
+// goes on from there.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "costmap_snapshot.hpp"
 #include "costmap_view.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/grid_view.hpp"
+#include "eaci/parallel/stop_poll.hpp"
 
 namespace eaci_service {
 
@@ -31,6 +36,8 @@ class CostmapMirror {
   // the next rows each time, round the map: a change its keeper failed to report is found
   // within (cells / kAuditBytes) plans (a few microseconds a plan).
   static constexpr std::size_t kAuditBytes = std::size_t{64} << 10;
+  // Bytes read between two questions to a sync's should_stop (about 0.1 ms of copying).
+  static constexpr std::size_t kBytesBetweenStopChecks = std::size_t{64} << 10;
   explicit CostmapMirror(std::size_t audit_bytes = kAuditBytes) : audit_bytes_(audit_bytes) {}
 
   struct Sync {
@@ -38,6 +45,8 @@ class CostmapMirror {
     std::size_t rows_read = 0;   // buffer rows compared or copied
     std::size_t rows_changed = 0;
     std::size_t rows_missed = 0; // rows the audit found changed that the keeper had not reported
+    bool stopped = false;        // should_stop said stop first: the copy is part read, the next sync
+                                 // must be told nothing is known (CostmapChanges::unknown())
   };
 
   // Brings the copy and the grid up to `costmap` (every cell valid), read as `interpretation`
@@ -45,7 +54,7 @@ class CostmapMirror {
   // std::bad_alloc (the mirror is then empty and made afresh by the next sync) and
   // std::invalid_argument for a cost rule the grid refuses.
   Sync sync(const CostmapView& costmap, const CostmapChanges& changes, const eaci::CellInterpretation& interpretation,
-            bool allow_corner_cutting, eaci::CostRule rule);
+            bool allow_corner_cutting, eaci::CostRule rule, const std::function<bool()>& should_stop = {});
 
   // The costmap's bytes as of the last sync, with the cells open() changed.
   const CostmapSnapshot& costmap() const { return copy_; }
@@ -65,8 +74,11 @@ class CostmapMirror {
   void clear();
 
  private:
-  void makeAfresh(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
-                  bool allow_corner_cutting, eaci::CostRule rule);
+  // Sizes the copy and the grid for `costmap`, no row made yet.
+  void beginAfresh(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
+                   bool allow_corner_cutting, eaci::CostRule rule);
+  // Copies and interprets buffer rows rows_made_ .. the last; false when should_stop said stop first.
+  bool makeRows(const CostmapView& costmap, eaci::StopPoll& poll);
   // Copies and interprets columns [x0, x1) of buffer row `y` if they differ from the copy.
   bool syncRow(const CostmapView& costmap, int y, int x0, int x1);
   // The grid row (row 0 = top) of buffer row `y` of the copy.
@@ -81,6 +93,7 @@ class CostmapMirror {
   eaci::CellInterpretation interpretation_;
   std::array<std::uint8_t, 256> cell_byte_{};
   bool made_ = false;
+  int rows_made_ = 0;  // buffer rows of the copy made since it was begun afresh (all, once made)
   struct Opened {
     std::size_t buffer_index;
     std::uint8_t value;  // the costmap's value before open()

@@ -13,7 +13,8 @@ CostmapSource::CostmapSource(Settings settings, std::function<void(const std::st
 
 CostmapSource::Read CostmapSource::read(const CostmapView& costmap, const CostmapChanges& changes,
                                         const eaci::CellInterpretation& interpretation, bool allow_corner_cutting,
-                                        eaci::CostRule rule, bool rolling, Clock::time_point now) {
+                                        eaci::CostRule rule, bool rolling, Clock::time_point now,
+                                        const std::function<bool()>& should_stop) {
   Read read;
   try {
     mirror_.restore();  // the cells opened for the last plan's start, before anything reads the copy
@@ -28,7 +29,7 @@ CostmapSource::Read CostmapSource::read(const CostmapView& costmap, const Costma
       read.mirror = &stood_in_;
       read.stood_in = true;
       read.synced = stood_in_.sync(CostmapView::of(*placed), CostmapChanges::unknown(), interpretation,
-                                   allow_corner_cutting, rule);
+                                   allow_corner_cutting, rule, should_stop);
       mirror_behind_ = true;  // mirror_ missed the changes the keeper reported with this costmap
       return read;
     }
@@ -36,7 +37,11 @@ CostmapSource::Read CostmapSource::read(const CostmapView& costmap, const Costma
         changes_unread_.exchange(false) || mirror_behind_ || distrusted_reads_left_ > 0 || !changes.known;
     read.mirror = &mirror_;
     read.synced = mirror_.sync(costmap, compare_all ? CostmapChanges::unknown() : changes, interpretation,
-                               allow_corner_cutting, rule);
+                               allow_corner_cutting, rule, should_stop);
+    if (read.synced.stopped) {  // part read: the next read compares every row
+      changes_unread_.store(true);
+      return read;
+    }
     if (distrusted_reads_left_ > 0) --distrusted_reads_left_;
     if (read.synced.rows_missed > 0) {
       ++missed_writes_;

@@ -7,6 +7,8 @@
 //     which compares every row (changesNotRead());
 //   - a read of a copy with nothing known of what changed (~make_plan, the node) may leave the
 //     copy older than the keeper's later reports assume: the next read compares every row;
+//   - a read stopped part-way (the plan's time limit, a cancel) leaves the copy part read: the
+//     next read compares every row;
 //   - a change the keeper missed (found by the mirror's audit) gets every row compared for the
 //     next kDistrustedReads reads, then the reports are trusted again; counted (missedWrites()).
 // Used by the plan holding the planning turn, but changesNotRead(), which any thread may call.
@@ -45,9 +47,12 @@ class CostmapSource {
   };
   // The copy brought up to `costmap` (every cell valid for the call) as the keeper's `changes`
   // and the trust above allow, read as given; `rolling`: a costmap that moves with the robot
-  // (no stand-in). Throws what CostmapMirror::sync throws (the source is then cleared).
+  // (no stand-in). Throws what CostmapMirror::sync throws (the source is then cleared). Asks
+  // `should_stop` between blocks of rows: stopped (read.synced.stopped), the copy is part read
+  // and the next read compares every row, going on with the rows not yet made.
   Read read(const CostmapView& costmap, const CostmapChanges& changes, const eaci::CellInterpretation& interpretation,
-            bool allow_corner_cutting, eaci::CostRule rule, bool rolling, Clock::time_point now);
+            bool allow_corner_cutting, eaci::CostRule rule, bool rolling, Clock::time_point now,
+            const std::function<bool()>& should_stop = {});
 
   // The changes handed to a plan were not read: the next read compares every row.
   void changesNotRead() noexcept { changes_unread_.store(true); }

@@ -157,7 +157,11 @@ std::string describePhases(const PlanPhases& p) {
 
 PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& request,
                                 const CostmapChanges& changes) noexcept {
-  const auto started = std::chrono::steady_clock::now();
+  const auto entered = std::chrono::steady_clock::now();
+  // The time limit counts from the caller's entry (its costmap lock and copy included).
+  const auto started = request.called_at != std::chrono::steady_clock::time_point{} && request.called_at < entered
+                           ? request.called_at
+                           : entered;
   PlanReply reply;
   const auto fail = [&](const std::string& why) noexcept {
     try {
@@ -221,7 +225,7 @@ PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& r
       }
     } turn{*this};
     const PlanCancellation::Scope in_progress(cancellation_);
-    const double waited = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    const double waited = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - entered).count();
     reply = planLocked(costmap, changes, request, config, should_stop, stop_reason);
     reply.phases.wait = waited;
     reply.phases.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
@@ -238,187 +242,224 @@ PlanReply PlanningService::plan(const CostmapView& costmap, const PlanRequest& r
   return reply;
 }
 
-PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapChanges& changes,
-                                      const PlanRequest& request, const Configuration& config,
-                                      const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
+// One plan's state while it holds the turn, shared by planLocked's steps.
+struct PlanningService::PlanState {
   using Clock = std::chrono::steady_clock;
+  PlanState(const CostmapView& costmap_in, const PlanRequest& request_in, const Configuration& config_in,
+            const std::function<bool()>& should_stop_in, const std::atomic<int>& stop_reason_in)
+      : costmap(costmap_in), frame(costmap_in.frame), request(request_in), config(config_in),
+        params(config_in.params), options(config_in.options), should_stop(should_stop_in),
+        stop_reason(stop_reason_in) {}
+  const CostmapView& costmap;
+  const eaci::MapFrame& frame;
+  const PlanRequest& request;
+  const Configuration& config;
+  const eaci::Parameters& params;
+  const RosPlannerOptions& options;
+  const std::function<bool()>& should_stop;  // asked by every loop that grows with the map
+  const std::atomic<int>& stop_reason;       // why should_stop said stop, once it did
+  PlanReply reply;
+  double tolerance = 0.0;                    // m: the request's, else default_tolerance
+  bool changes_read = false;                 // the keeper's reported changes went into the copy
+  CostmapMirror* mirror = nullptr;           // the copy planned on, once read
+  eaci::CellInterpretation interpretation;
+  eaci::Cell start_cell, goal_cell, target;  // target: where the route ends (the goal, or a cell within the tolerance)
+  bool goal_free = false;
   Clock::time_point phase_start = Clock::now();
-  const auto phaseDone = [&phase_start](double& into) {
+
+  StopReason stopped() const { return static_cast<StopReason>(stop_reason.load()); }
+  // Adds the time since the last lap to `into`.
+  void lap(double& into) {
     const Clock::time_point now = Clock::now();
     into += std::chrono::duration<double, std::milli>(now - phase_start).count();
     phase_start = now;
-  };
-  if (workspace_suspect_ || !workspace_) {
-    source_.clear();  // a plan that threw may have left its copy half made
-    workspace_suspect_ = false;
-    // Its destructor joins the colony's and the search's worker threads, which a loaded machine
-    // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
-    // on a thread of its own, which the plan does not wait for (its landmark job is only
-    // cancelled, LandmarkCache).
-    eaci::destroyOffThisThread(std::move(workspace_));
-    workspace_ = std::make_unique<eaci::PlannerWorkspace>();
-    landmarks_reported_ = -1;
-    landmark_error_reported_.clear();
   }
-  const eaci::Parameters& params = config.params;
-  const RosPlannerOptions& options = config.options;
-  PlanReply reply;
-  reply.options = options;
-  reply.frame = costmap.frame;
-  reply.frame_id = costmap.frame_id;
-  reply.goal = request.goal;
-  const double tolerance = request.tolerance >= 0 ? request.tolerance : options.default_tolerance;
-  PlanRecord record;
-  record.start = request.start;
-  record.goal = request.goal;
-  record.tolerance = tolerance;
-  const CostmapMirror* planned_on = nullptr;  // the copy the plan read, once made
-  const auto finish = [&](PlanReply& done) -> PlanReply& {
-    record.outcome = describeOutcome(done.outcome, done.error, done.result, costmap.frame.resolution);
-    {
-      std::lock_guard<std::mutex> lock(last_plan_mutex_);
-      last_plan_ = record;
-    }
-    if (!done.ok()) {
-      if (settings_.save_costmap_on_failure && planned_on != nullptr && !planned_on->costmap().cells.empty()) {
-        ReplayJob job;
-        job.prefix = "eaci_failed_plan";
-        job.params = params;
-        job.algorithm = options.algorithm;
-        job.request = record;
-        job.notes = replayNotes("the costmap of a failed plan", config);
-        job.costmap = planned_on->costmap();  // as planned on: a start in the band opened
-        if (!writer_->submit(std::move(job))) say(LogLevel::kWarn, "could not hand the failed plan's costmap to the writer");
-      }
-    }
-    return done;
-  };
-  bool changes_read = false;
-  const auto failure = [&](PlanOutcome outcome, const std::string& why) -> PlanReply {
-    if (!changes_read) source_.changesNotRead();
-    reply.outcome = outcome;
-    reply.error = why;
-    return finish(reply);
-  };
-  const auto stop_outcome = [&] { return stoppedOutcome(static_cast<StopReason>(stop_reason.load())); };
+  // The plan ends because should_stop said so while doing `what`.
+  Refusal stoppedWhile(const std::string& what) const {
+    return {stoppedOutcome(stopped()), std::string(toString(stopped())) + " while " + what};
+  }
+};
 
-  const eaci::MapFrame& frame = costmap.frame;
-  if (const std::string problem = costmapProblem(costmap); !problem.empty())
-    return failure(PlanOutcome::kBadCostmap, problem);
-  if (const std::string invalid = eaci::validationError(params); !invalid.empty())
-    return failure(PlanOutcome::kBadParameters, "invalid parameter: " + invalid);
-  eaci::CellInterpretation interpretation =
-      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(params.lethal_cost), params.allow_unknown);
-  interpretation.unknown_value = kCostmapUnknown;
+// A plan, step by step; each step either goes on (nullopt) or ends the plan with its reason.
+PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapChanges& changes,
+                                      const PlanRequest& request, const Configuration& config,
+                                      const std::function<bool()>& should_stop, const std::atomic<int>& stop_reason) {
+  renewWorkspaceIfSuspect();
+  PlanState plan(costmap, request, config, should_stop, stop_reason);
+  plan.reply.options = config.options;
+  plan.reply.frame = costmap.frame;
+  plan.reply.frame_id = costmap.frame_id;
+  plan.reply.goal = request.goal;
+  plan.tolerance = request.tolerance >= 0 ? request.tolerance : config.options.default_tolerance;
 
+  std::optional<Refusal> refused = checkCostmapAndParameters(plan);
+  if (!refused) refused = readCostmap(plan, changes);  // the copy brought up to the costmap (or the stand-in)
+  if (!refused) refused = placeStart(plan);            // the start's cell, opened out of the inflated band
+  if (!refused) refused = placeGoal(plan);             // the free cell nearest the goal within the tolerance
+  if (!refused) refused = searchRoute(plan);           // the route; else to the reachable cell nearest the goal
+  if (!refused) refused = makePoses(plan);             // the poses that go out, every segment checked
+  if (refused) {
+    if (!plan.changes_read) source_.changesNotRead();
+    plan.reply.outcome = refused->outcome;
+    plan.reply.error = refused->why;
+  } else {
+    plan.reply.outcome = PlanOutcome::kOk;
+  }
+  recordPlan(plan);
+  return std::move(plan.reply);
+}
+
+void PlanningService::renewWorkspaceIfSuspect() {
+  if (!workspace_suspect_ && workspace_) return;
+  source_.clear();  // a plan that threw may have left its copy half made
+  workspace_suspect_ = false;
+  // Its destructor joins the colony's and the search's worker threads, which a loaded machine
+  // may schedule late, and move_base holds its costmap lock across the plan: it is destroyed
+  // on a thread of its own, which the plan does not wait for (its landmark job is only
+  // cancelled, LandmarkCache).
+  eaci::destroyOffThisThread(std::move(workspace_));
+  workspace_ = std::make_unique<eaci::PlannerWorkspace>();
+  landmarks_reported_ = -1;
+  landmark_error_reported_.clear();
+}
+
+std::optional<PlanningService::Refusal> PlanningService::checkCostmapAndParameters(PlanState& plan) {
+  if (const std::string problem = costmapProblem(plan.costmap); !problem.empty())
+    return Refusal{PlanOutcome::kBadCostmap, problem};
+  if (const std::string invalid = eaci::validationError(plan.params); !invalid.empty())
+    return Refusal{PlanOutcome::kBadParameters, "invalid parameter: " + invalid};
+  plan.interpretation =
+      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(plan.params.lethal_cost), plan.params.allow_unknown);
+  plan.interpretation.unknown_value = kCostmapUnknown;
+  return std::nullopt;
+}
+
+std::optional<PlanningService::Refusal> PlanningService::readCostmap(PlanState& plan, const CostmapChanges& changes) {
   // The planner's copy of the costmap, brought up to it where it changed; or, for a costmap
   // costmap_2d has emptied by a resize, the last filled one placed into its frame.
-  const CostmapSource::Read read = source_.read(costmap, changes, interpretation, params.allow_corner_cutting,
-                                                eaci::costRule(params), rolling_, Clock::now());
-  changes_read = true;
-  CostmapMirror& mirror = *read.mirror;
-  planned_on = &mirror;
-  reply.stood_in_for_emptied = read.stood_in;
-  reply.phases.afresh = read.synced.afresh;
-  reply.phases.rows_read = read.synced.rows_read;
-  reply.phases.rows_changed = read.synced.rows_changed;
-  phaseDone(reply.phases.costmap);
+  const CostmapSource::Read read = source_.read(plan.costmap, changes, plan.interpretation,
+                                                plan.params.allow_corner_cutting, eaci::costRule(plan.params), rolling_,
+                                                PlanState::Clock::now(), plan.should_stop);
+  plan.changes_read = true;  // or, when stopped, put back for the next read (CostmapSource)
+  if (read.synced.stopped)
+    return plan.stoppedWhile("reading the costmap (" + std::to_string(read.synced.rows_read) + " of " +
+                             std::to_string(plan.frame.height) + " rows)");
+  plan.mirror = read.mirror;
+  plan.reply.stood_in_for_emptied = read.stood_in;
+  plan.reply.phases.afresh = read.synced.afresh;
+  plan.reply.phases.rows_read = read.synced.rows_read;
+  plan.reply.phases.rows_changed = read.synced.rows_changed;
+  plan.lap(plan.reply.phases.costmap);
+  return std::nullopt;
+}
 
-  const auto start_cell = frame.worldToCell(request.start);
-  if (!start_cell) return failure(PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap");
-  const auto goal_cell = frame.worldToCell(request.goal);
-  if (!goal_cell) return failure(PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap");
-  const StartCellCheck start_check = openStartCell(mirror.costmap(), interpretation, *start_cell, should_stop);
-  if (!start_check.ok)
-    return failure(start_check.stopped ? stop_outcome() : start_check.outcome,
-                   "start " + where(request.start) + ": " + start_check.error);
-  for (const eaci::Cell& cell : start_check.opened) mirror.open(cell, start_check.opened_cost);  // until the next sync
-  reply.start_cells_opened = start_check.cells_opened;
-  if (start_check.cells_opened > 0)
+std::optional<PlanningService::Refusal> PlanningService::placeStart(PlanState& plan) {
+  const PlanRequest& request = plan.request;
+  const auto start_cell = plan.frame.worldToCell(request.start);
+  if (!start_cell) return Refusal{PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap"};
+  const auto goal_cell = plan.frame.worldToCell(request.goal);
+  if (!goal_cell) return Refusal{PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap"};
+  plan.start_cell = *start_cell;
+  plan.goal_cell = *goal_cell;
+  const StartCellCheck check = openStartCell(plan.mirror->costmap(), plan.interpretation, *start_cell, plan.should_stop);
+  if (!check.ok)
+    return Refusal{check.stopped ? stoppedOutcome(plan.stopped()) : check.outcome,
+                   "start " + where(request.start) + ": " + check.error};
+  for (const eaci::Cell& cell : check.opened) plan.mirror->open(cell, check.opened_cost);  // until the next read
+  plan.reply.start_cells_opened = check.cells_opened;
+  if (check.cells_opened > 0)
     say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
-                             std::to_string(start_check.start_cost) + ", lethal_cost " +
-                             std::to_string(params.lethal_cost) + "): planning out of it by the cheapest way (" +
-                             std::to_string(start_check.cells_opened) + " cells), as navfn plans from the robot's cell");
+                             std::to_string(check.start_cost) + ", lethal_cost " + std::to_string(plan.params.lethal_cost) +
+                             "): planning out of it by the cheapest way (" + std::to_string(check.cells_opened) +
+                             " cells), as navfn plans from the robot's cell");
+  plan.lap(plan.reply.phases.start);
+  return std::nullopt;
+}
 
-  phaseDone(reply.phases.start);
-  const eaci::GridView view = mirror.view();
-  const bool goal_free = view.isFree(*goal_cell);
+std::optional<PlanningService::Refusal> PlanningService::placeGoal(PlanState& plan) {
   // The goal tolerance, as navfn's: the route ends on the cell nearest to the goal, within the
   // tolerance, that the start can reach. First the nearest free cell (the goal itself when it is
   // free: no extra work in the normal case); only when no route reaches it, a flood from the
-  // start finds the nearest reachable cell (a free cell behind a wall must not win).
-  const double radius_cells = tolerance / frame.resolution;
-  const auto stopped_while = [&](const std::string& what) {
-    return failure(stop_outcome(),
-                   std::string(toString(static_cast<StopReason>(stop_reason.load()))) + " while " + what);
-  };
-  std::optional<eaci::Cell> target = eaci::nearestFreeCell(view, *goal_cell, radius_cells, should_stop);
+  // start finds the nearest reachable cell (searchRoute: a free cell behind a wall must not win).
+  const eaci::GridView view = plan.mirror->view();
+  plan.goal_free = view.isFree(plan.goal_cell);
+  const std::optional<eaci::Cell> target =
+      eaci::nearestFreeCell(view, plan.goal_cell, plan.tolerance / plan.frame.resolution, plan.should_stop);
   if (!target) {
-    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
-      return stopped_while("looking for a free cell near the goal");
-    return failure(PlanOutcome::kGoalBlocked, "goal " + where(request.goal) +
+    if (plan.stopped() != StopReason::kNone) return plan.stoppedWhile("looking for a free cell near the goal");
+    return Refusal{PlanOutcome::kGoalBlocked, "goal " + where(plan.request.goal) +
                                                   " is in an obstacle and no free cell lies within " +
-                                                  eaci::formatNumber(tolerance) + " m of it");
+                                                  eaci::formatNumber(plan.tolerance) + " m of it"};
   }
+  plan.target = *target;
+  plan.lap(plan.reply.phases.goal);
+  return std::nullopt;
+}
 
-  phaseDone(reply.phases.goal);
-
-  useLandmarksFor(frame, options.landmarks);
+std::optional<PlanningService::Refusal> PlanningService::searchRoute(PlanState& plan) {
+  useLandmarksFor(plan.frame, plan.options.landmarks);
   eaci::PlanOptions plan_options;
-  plan_options.record_pheromone = options.visualize_pheromone && request.record_pheromone;
+  plan_options.record_pheromone = plan.options.visualize_pheromone && plan.request.record_pheromone;
   plan_options.workspace = workspace_.get();
-  plan_options.should_stop = [&should_stop](int) { return should_stop(); };
+  plan_options.should_stop = [&should_stop = plan.should_stop](int) { return should_stop(); };
   plan_options.never_worse_than_search = true;  // a lucky ant's detour never reaches the robot
   // With turn_cost > 0 the turn onto the goal's heading is priced too (grid angles are the
   // costmap frame's yaws, y up the rows); the robot's own heading is not (docs/ros.md).
-  plan_options.end_headings.goal = eaci::travelHeading(request.goal_yaw, options.orientation_mode);
+  plan_options.end_headings.goal = eaci::travelHeading(plan.request.goal_yaw, plan.options.orientation_mode);
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
-  const eaci::CostGrid& grid = mirror.grid();
-  reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
-  reply.phases.core = reply.result.times;
-  phase_start = Clock::now();
-  if (reply.result.status == eaci::PlanStatus::kNoPath && !reply.result.interrupted && radius_cells >= 1) {
-    const auto reachable = eaci::nearestReachableCell(grid, *start_cell, *goal_cell, radius_cells, should_stop);
-    if (stop_reason.load() != static_cast<int>(StopReason::kNone))
-      return stopped_while("looking for a cell near the goal that the start can reach");
+  const eaci::CostGrid& grid = plan.mirror->grid();
+  eaci::PlanResult& result = plan.reply.result;
+  result = eaci::plan(grid, plan.start_cell, plan.target, plan.options.algorithm, plan.params, plan_options);
+  plan.reply.phases.core = result.times;
+  plan.phase_start = PlanState::Clock::now();
+  const double radius_cells = plan.tolerance / plan.frame.resolution;
+  if (result.status == eaci::PlanStatus::kNoPath && !result.interrupted && radius_cells >= 1) {
+    const auto reachable =
+        eaci::nearestReachableCell(grid, plan.start_cell, plan.goal_cell, radius_cells, plan.should_stop);
+    if (plan.stopped() != StopReason::kNone)
+      return plan.stoppedWhile("looking for a cell near the goal that the start can reach");
     if (!reachable)
-      return failure(goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked,
-                     "goal " + where(request.goal) + " cannot be reached from the start, nor any cell within " +
-                         eaci::formatNumber(tolerance) + " m of it");
-    if (!(*reachable == *target)) {  // else the plan failed for another reason: its error stands
-      say(LogLevel::kInfo, "no route reaches " + where(frame.cellToWorld(*target)) + ": planning to " +
-                               where(frame.cellToWorld(*reachable)) +
+      return Refusal{plan.goal_free ? PlanOutcome::kNoPath : PlanOutcome::kGoalBlocked,
+                     "goal " + where(plan.request.goal) + " cannot be reached from the start, nor any cell within " +
+                         eaci::formatNumber(plan.tolerance) + " m of it"};
+    if (!(*reachable == plan.target)) {  // else the plan failed for another reason: its error stands
+      say(LogLevel::kInfo, "no route reaches " + where(plan.frame.cellToWorld(plan.target)) + ": planning to " +
+                               where(plan.frame.cellToWorld(*reachable)) +
                                ", the cell nearest the goal within the tolerance that the start can reach");
-      target = reachable;
-      reply.result = eaci::plan(grid, *start_cell, *target, options.algorithm, params, plan_options);
+      plan.target = *reachable;
+      result = eaci::plan(grid, plan.start_cell, plan.target, plan.options.algorithm, plan.params, plan_options);
     }
   }
-  phaseDone(reply.phases.tolerance);
-  reportLandmarks(frame);
-  if (reply.result.interrupted) reply.stopped_by = static_cast<StopReason>(stop_reason.load());
-  if (!reply.result.success()) {
-    if (reply.result.status != eaci::PlanStatus::kStopped)
-      return failure(outcomeOf(reply.result.status, goal_free), reply.result.error);
-    if (reply.stopped_by == StopReason::kTimeLimit)
-      return failure(PlanOutcome::kTimeLimit, "no route found within max_planning_time (" +
-                                                  eaci::formatNumber(options.max_planning_time) + " s)");
-    return failure(stoppedOutcome(reply.stopped_by), std::string(toString(reply.stopped_by)) + " after " +
-                                                         std::to_string(reply.result.iterations_run) +
-                                                         " iterations, before a route was found");
-  }
-  const std::string defect = routeDefect(view, reply.result.path, *start_cell, *target, params.allow_corner_cutting);
+  plan.lap(plan.reply.phases.tolerance);
+  reportLandmarks(plan.frame);
+  if (result.interrupted) plan.reply.stopped_by = plan.stopped();
+  if (result.success()) return std::nullopt;
+  if (result.status != eaci::PlanStatus::kStopped) return Refusal{outcomeOf(result.status, plan.goal_free), result.error};
+  if (plan.reply.stopped_by == StopReason::kTimeLimit)
+    return Refusal{PlanOutcome::kTimeLimit, "no route found within max_planning_time (" +
+                                                eaci::formatNumber(plan.options.max_planning_time) + " s)"};
+  return Refusal{stoppedOutcome(plan.reply.stopped_by), std::string(toString(plan.reply.stopped_by)) + " after " +
+                                                            std::to_string(result.iterations_run) +
+                                                            " iterations, before a route was found"};
+}
+
+std::optional<PlanningService::Refusal> PlanningService::makePoses(PlanState& plan) {
+  PlanReply& reply = plan.reply;
+  const eaci::GridView view = plan.mirror->view();
+  const bool corner_cutting = plan.params.allow_corner_cutting;
+  const std::string defect = routeDefect(view, reply.result.path, plan.start_cell, plan.target, corner_cutting);
   if (!defect.empty())
-    return failure(PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan");
-  if (!(*target == *goal_cell)) reply.goal = frame.cellToWorld(*target);
+    return Refusal{PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan"};
+  if (!(plan.target == plan.goal_cell)) reply.goal = plan.frame.cellToWorld(plan.target);
   // What goes out: the smoothed route's poses, every segment between two of them checked; if
   // the smoother got one wrong, the grid route's (just checked cell by cell).
   if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
-  const FinishedRoute finished = finishRoute(view, frame, reply.result.smoothed_path, reply.result.path, request.start,
-                                             reply.goal, params.allow_corner_cutting, settings_.poses_hook);
-  phaseDone(reply.phases.finish);
+  const FinishedRoute finished = finishRoute(view, plan.frame, reply.result.smoothed_path, reply.result.path,
+                                             plan.request.start, reply.goal, corner_cutting, settings_.poses_hook);
+  plan.lap(reply.phases.finish);
   if (finished.poses.empty())
-    return failure(PlanOutcome::kInternalError, "internal error: no route's poses pass the last check (" +
-                                                    finished.defect + "); no plan");
+    return Refusal{PlanOutcome::kInternalError, "internal error: no route's poses pass the last check (" +
+                                                    finished.defect + "); no plan"};
   if (finished.grid_route) {
     say(LogLevel::kWarn, "the smoothed route's poses are not drivable (" + finished.smoothed_defect +
                              "): sending the grid route's instead");
@@ -437,8 +478,28 @@ PlanReply PlanningService::planLocked(const CostmapView& costmap, const CostmapC
                              (!reply.result.route_from_search ? "the best route so far"
                               : colony_replaced ? "the cheapest route the islands sit on (cheaper than the colony's best)"
                                                 : "the cheapest route the islands sit on (no ant had arrived yet)"));
-  reply.outcome = PlanOutcome::kOk;
-  return finish(reply);
+  return std::nullopt;
+}
+
+void PlanningService::recordPlan(const PlanState& plan) {
+  PlanRecord record;
+  record.start = plan.request.start;
+  record.goal = plan.request.goal;
+  record.tolerance = plan.tolerance;
+  record.outcome = describeOutcome(plan.reply.outcome, plan.reply.error, plan.reply.result, plan.frame.resolution);
+  if (!plan.reply.ok() && settings_.save_costmap_on_failure && plan.mirror != nullptr &&
+      !plan.mirror->costmap().cells.empty()) {
+    ReplayJob job;
+    job.prefix = "eaci_failed_plan";
+    job.params = plan.params;
+    job.algorithm = plan.options.algorithm;
+    job.request = record;
+    job.notes = replayNotes("the costmap of a failed plan", plan.config);
+    job.costmap = plan.mirror->costmap();  // as planned on: a start in the band opened
+    if (!writer_->submit(std::move(job))) say(LogLevel::kWarn, "could not hand the failed plan's costmap to the writer");
+  }
+  std::lock_guard<std::mutex> lock(last_plan_mutex_);
+  last_plan_ = std::move(record);
 }
 
 void PlanningService::useLandmarksFor(const eaci::MapFrame& frame, int requested) {

@@ -82,6 +82,10 @@ struct PlanRequest {
   double start_yaw = std::numeric_limits<double>::quiet_NaN();
   double goal_yaw = std::numeric_limits<double>::quiet_NaN();
   bool record_pheromone = false;  // with visualize_pheromone, fill result.pheromone (someone listens)
+  // When the caller's call began (makePlan entered, before the costmap's lock and any copy):
+  // max_planning_time counts from it. Default (the epoch) or later than plan()'s entry: from
+  // plan()'s entry.
+  std::chrono::steady_clock::time_point called_at{};
 };
 
 // Where a plan's time went, in milliseconds (steady clock), step by step: for profiles
@@ -96,7 +100,7 @@ struct PlanPhases {
   eaci::PlanTimes core;    // the search (with the landmarks' check), the colony, smoothing
   double tolerance = 0.0;  // no route to the goal: the flood for the reachable cell and the second plan
   double finish = 0.0;     // the grid route's check, the poses that go out made and checked (route_finish.hpp)
-  double total = 0.0;      // plan(), entry to return
+  double total = 0.0;      // from the caller's entry (PlanRequest::called_at, else plan()'s) to return
 };
 // "total 1.234 ms: wait 0.001, costmap 0.002 (12 of 4096 rows read, 3 changed), ..." on one line.
 std::string describePhases(const PlanPhases& phases);
@@ -175,9 +179,24 @@ class PlanningService {
   std::string saveCostmap(CostmapSnapshot costmap, ReplayFiles& files) noexcept;
 
  private:
+  // One plan, holding the turn: its steps below, in order, on a PlanState they share.
   PlanReply planLocked(const CostmapView& costmap, const CostmapChanges& changes, const PlanRequest& request,
                        const Configuration& config, const std::function<bool()>& should_stop,
                        const std::atomic<int>& stop_reason);
+  struct PlanState;
+  struct Refusal {  // why a step ends the plan
+    PlanOutcome outcome;
+    std::string why;
+  };
+  void renewWorkspaceIfSuspect();  // a plan that threw: a new workspace, the copy made afresh
+  std::optional<Refusal> checkCostmapAndParameters(PlanState& plan);
+  std::optional<Refusal> readCostmap(PlanState& plan, const CostmapChanges& changes);
+  std::optional<Refusal> placeStart(PlanState& plan);
+  std::optional<Refusal> placeGoal(PlanState& plan);
+  std::optional<Refusal> searchRoute(PlanState& plan);
+  std::optional<Refusal> makePoses(PlanState& plan);
+  // The plan as ~last_plan and ~save_costmap replay it; a failed one's costmap saved when asked.
+  void recordPlan(const PlanState& plan);
   // Landmarks for the plan on a costmap in `frame`: `requested`, none on a rolling window.
   void useLandmarksFor(const eaci::MapFrame& frame, int requested);
   // After the plan: fewer landmarks than asked (their memory cap) or a failure to make them,

@@ -3,6 +3,7 @@
 // every plan is the plan a fresh grid of the costmap as it is gives, seed for seed.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -112,6 +113,32 @@ TEST(CostmapMirror, TheAuditFindsAChangeNobodyReported) {
     missed += mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {}).rows_missed;
   EXPECT_EQ(missed, 1u);
   EXPECT_EQ(bytesOf(mirror.grid()), freshGridBytes(costmap));
+}
+
+// A plan's time limit counts from the caller's entry, the first copy of a large costmap
+// included: a sync stopped part-way keeps the rows made; the next one compares those (they
+// may have changed since) and makes the rest.
+TEST(CostmapMirror, ASyncStoppedPartWayIsFinishedByTheNext) {
+  std::mt19937 random(5);
+  CostmapSnapshot costmap = randomCostmap(1024, 200, random);  // asked after every 64 rows of 1024 bytes
+  CostmapMirror mirror;
+  int asked = 0;
+  const std::function<bool()> second_question = [&asked] { return ++asked == 2; };  // after 128 rows
+  const CostmapMirror::Sync stopped = mirror.sync(CostmapView::of(costmap), CostmapChanges::none(),
+                                                  costmapInterpretation(), false, {}, second_question);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(stopped.rows_read, 128u);
+  costmap.cells[10 * 1024 + 5] ^= 0x55;   // a row made before the stop
+  costmap.cells[170 * 1024 + 7] ^= 0x55;  // a row not yet made
+  const CostmapMirror::Sync finished =
+      mirror.sync(CostmapView::of(costmap), CostmapChanges::unknown(), costmapInterpretation(), false, {});
+  EXPECT_FALSE(finished.stopped);
+  EXPECT_EQ(finished.rows_read, 200u);
+  EXPECT_EQ(bytesOf(mirror.grid()), freshGridBytes(costmap));
+  EXPECT_EQ(mirror.costmap().cells, costmap.cells);
+  const CostmapMirror::Sync next =
+      mirror.sync(CostmapView::of(costmap), CostmapChanges::none(), costmapInterpretation(), false, {});
+  EXPECT_FALSE(next.afresh);  // made: from now on only what changed
 }
 
 TEST(CostmapMirror, ANewFrameOrInterpretationMakesItAfresh) {

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -416,6 +417,31 @@ TEST(PlanningService, TheChangesReportedToARefusedPlanAreReadByTheNext) {
             PlanOutcome::kBadParameters);
   config.error.clear();
   configure(service, config);
+  const PlanReply reply = service.plan(CostmapView::of(costmap), r, CostmapChanges::none());
+  ASSERT_TRUE(reply.ok()) << reply.error;
+  EXPECT_EQ(sentPosesFault(costmap, reply.poses, r.start, r.goal, 1.0), "");
+}
+
+// max_planning_time bounds the whole call: the first copy of a large costmap is read in
+// blocks of rows, the stop asked between them. A plan stopped there ends with the reason; the
+// next plan goes on with the rows not yet read and compares those read, whatever the keeper
+// reports (here: nothing changed).
+TEST(PlanningService, APlanStoppedWhileReadingTheCostmapLeavesNoStaleRowBehind) {
+  Log log;
+  auto asked = std::make_shared<std::atomic<int>>(0);
+  ServiceSettings s = settings();
+  s.shutting_down = [asked] { return ++*asked == 1; };  // asked first after 66 rows of 1000 bytes (64 KiB)
+  PlanningService service(s, log.logger());
+  configure(service, configuration(eaci::Algorithm::kAStar));
+  CostmapSnapshot costmap = openCostmap(1000, 1000);
+  const PlanRequest r = request(costmap, {10, 100}, {900, 100});
+  const PlanReply stopped = service.plan(CostmapView::of(costmap), r, CostmapChanges::none());
+  EXPECT_EQ(stopped.outcome, PlanOutcome::kShutdown);
+  EXPECT_NE(stopped.error.find("while reading the costmap (66 of 1000 rows)"), std::string::npos) << stopped.error;
+  for (int col = 0; col < 1000; ++col) {
+    if (col != 999) at(costmap, 40, col) = kCostmapLethal;   // in the rows read before the stop
+    if (col != 900) at(costmap, 500, col) = kCostmapLethal;  // in the rows not yet read
+  }
   const PlanReply reply = service.plan(CostmapView::of(costmap), r, CostmapChanges::none());
   ASSERT_TRUE(reply.ok()) << reply.error;
   EXPECT_EQ(sentPosesFault(costmap, reply.poses, r.start, r.goal, 1.0), "");
