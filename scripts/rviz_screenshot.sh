@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# A screenshot of RViz showing what the planner node planned on the lab: launch/demo.launch with
+# rviz:=true on a virtual display (Xvfb, software OpenGL); once RViz listens, a goal as its
+# "2D Nav Goal" sends it (the route before smoothing and the islands are made only while someone
+# listens), and SECONDS later (default 6) ImageMagick's import grabs the window. Needs Debian's rviz, xvfb and imagemagick, and the package's devel or
+# install space sourced.
+# Usage: scripts/rviz_screenshot.sh [OUT.png] [SECONDS]     (default docs/figures/rviz_demo.png)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-docs/figures/rviz_demo.png} wait_s=${2:-6}
+for tool in Xvfb import rviz roslaunch; do
+  command -v "$tool" >/dev/null || { echo "rviz_screenshot: $tool not found (apt-get install rviz xvfb imagemagick; source the ROS setup)" >&2; exit 1; }
+done
+display=:$((70 + RANDOM % 20)) port=$((12100 + RANDOM % 100))
+export ROS_MASTER_URI=http://localhost:$port DISPLAY=$display LIBGL_ALWAYS_SOFTWARE=1
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null || true; done; sleep 3
+            for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; }
+trap cleanup EXIT
+Xvfb "$display" -screen 0 1400x900x24 >/dev/null 2>&1 & pids+=($!)
+roscore -p "$port" >/dev/null 2>&1 & pids+=($!)
+sleep 3
+roslaunch eaci_planner demo.launch rviz:=true >"${RVIZ_SHOT_LOG:-/dev/null}" 2>&1 & pids+=($!)
+sleep 10
+rostopic pub -1 /move_base_simple/goal geometry_msgs/PoseStamped \
+  '{header: {frame_id: map}, pose: {position: {x: 4.2, y: 0.5}, orientation: {w: 1.0}}}' >/dev/null
+sleep "$wait_s"
+mkdir -p "$(dirname "$out")"
+for attempt in 1 2 3; do  # a software-GL RViz sometimes shows a blank frame: grab again
+  import -display "$display" -window root -crop 1200x800+0+0 +repage "$out"
+  [ "$(identify -format '%[fx:standard_deviation > 0.01]' "$out")" = 1 ] && { echo "rviz_screenshot: $out"; exit 0; }
+  sleep 2
+done
+echo "rviz_screenshot: RViz showed a blank window three times ($out)" >&2
+exit 1
