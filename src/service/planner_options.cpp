@@ -53,7 +53,10 @@ const std::map<std::string, eaci::detail::FieldAccess<Options>>& optionTable() {
 eaci::Parameters rosDefaultParameters() {
   eaci::Parameters params;
   params.allow_unknown = true;  // the ROS default, as navfn and global_planner
-  params.smooth_path = true;    // robots drive the smoothed route
+  params.cost_factor = 0.8;     // navfn's weighting of the costmap (50 + 0.8 c a cell): its doors, its route lengths
+  params.smooth_path = true;    // robots drive the smoothed route,
+  params.round_corners = 2;     // its corners cut in two passes (a 90-degree bend becomes two of about 45),
+  params.smooth_tolerance = 0.1;  // each cut through cells at most 10 % costlier than the corner it cuts off
   params.early_stop_iterations = 10;
   params.stop_gap = 0.01;
   params.region_margin = 4;
@@ -116,8 +119,9 @@ std::vector<std::pair<std::string, std::string>> unreadParameters() {
   const auto ros = rosParameterNames();
   for (const std::string& name : eaci::parameterNames()) {
     if (std::find(ros.begin(), ros.end(), name) != ros.end()) continue;
-    unread.emplace_back(name, name == "allow_corner_cutting"
-                                  ? "a robot never cuts corners (the paper's benchmarks only)"
+    unread.emplace_back(name, name == "allow_corner_cutting" ? "a robot never cuts corners (the paper's benchmarks only)"
+                              : name == "round_corners" || name == "smooth_tolerance"
+                                  ? "fixed on a robot (round_corners 2, smooth_tolerance 0.1): the command-line planner's"
                                   : "a parameter of the command-line planner and the benchmarks only");
   }
   return unread;

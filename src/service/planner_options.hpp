@@ -37,7 +37,10 @@ struct RosPlannerOptions {
 // The core parameters a robot plans with when its configuration sets none (the move_base
 // plugin and the planner node from one line of configuration): the paper's colony (m = 50,
 // Nc_max = 100, alpha, beta, Q, kappa, lambda, epsilon) made robot-ready: allow_unknown true
-// (as navfn and global_planner), smooth_path true (a robot drives the smoothed route), early
+// (as navfn and global_planner), cost_factor 0.8 (navfn's weighting of the costmap; global_planner's
+// 3 takes wider doors, longer routes: 1.05-1.12 x navfn's arrival time on maps nobody tuned on,
+// docs/ros.md "Measured"), smooth_path true (a robot drives the smoothed route) with its corners
+// rounded (round_corners 2, smooth_tolerance 0.1, fixed: not ROS parameters), early
 // stopping after 10 iterations without a cheaper route or once within 1 % of the cheapest
 // route (stop_gap 0.01), ants within 4 moves of the cheapest route (region_margin 4); one
 // thread, as the core's default, so a plan leaves the other cores to the controller and SLAM

@@ -110,7 +110,7 @@ class PlannerReconfigure(unittest.TestCase):
         self.clear_errors()
         config = self.client.update_configuration({"cost_factor": 1.0})
         self.assert_logged("reconfigure rejected: " + NODE + "/kappa must be in (0, 1.3] (got 0)")
-        self.assertEqual(config["cost_factor"], 3.0)  # the value in force, written back
+        self.assertEqual(config["cost_factor"], 0.8)  # the value in force, written back
         self.assert_refused_naming(start_error)
         config = self.client.update_configuration({"kappa": 0.5})
         self.assertEqual(config["kappa"], 0.5)
@@ -122,7 +122,7 @@ class PlannerReconfigure(unittest.TestCase):
                              "the values in force stay (kappa stays 0.5)", {"kappa": 0.5})
         self.assert_rejected({"algorithm": "dijkstra", "cost_factor": 2.0},
                              "reconfigure rejected: " + NODE + "/algorithm must be eaci or astar (got 'dijkstra'",
-                             {"algorithm": "astar", "cost_factor": 3.0})
+                             {"algorithm": "astar", "cost_factor": 0.8})
         # Outside the cfg's range: clamped by dynamic_reconfigure (as global_planner's), then valid.
         config = self.client.update_configuration({"kappa": 1.5})
         self.assertEqual(config["kappa"], 1.3)

@@ -498,7 +498,8 @@ TEST(PlannerOptions, EveryBadValueIsNamed) {
 
 // config/eaci_planner.yaml is exactly what one line of configuration plans with: every core
 // parameter a ROS planner reads is in it, and nothing else; read through the parameter-file
-// reader over the core's defaults (the paper's) it gives rosDefaultParameters(), value for value.
+// reader over the core's defaults (the paper's) it gives rosDefaultParameters(), value for value,
+// but for the corner rounding a robot's smoothing has fixed (TheRobotReadyDefaults).
 TEST(PlannerOptions, ConfigEaciPlannerYamlIsExactlyTheRobotReadyDefaults) {
   const std::string path = std::string(EACI_SOURCE_DIR) + "/config/eaci_planner.yaml";
   std::ifstream in(path);
@@ -517,8 +518,10 @@ TEST(PlannerOptions, ConfigEaciPlannerYamlIsExactlyTheRobotReadyDefaults) {
   const auto expected = eaci::parameterValues(rosDefaultParameters());
   const auto got = eaci::parameterValues(read);
   ASSERT_EQ(got.size(), expected.size());
-  for (std::size_t i = 0; i < got.size(); ++i)
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (got[i].first == "round_corners" || got[i].first == "smooth_tolerance") continue;
     EXPECT_EQ(valueText(got[i].second), valueText(expected[i].second)) << got[i].first;
+  }
   // The ROS options are not parameters of the file's reader (eaci_plan --params reads it too):
   // their defaults are docs/ros.md's table and the cfg's (test_reconfigured_parameters).
   const RosPlannerOptions options;
@@ -534,6 +537,9 @@ TEST(PlannerOptions, TheRobotReadyDefaults) {
   EXPECT_EQ(robot.threads, 1);  // a plan leaves the other cores to the controller and SLAM
   EXPECT_EQ(robot.region_margin, 4);
   EXPECT_TRUE(robot.smooth_path);
+  EXPECT_EQ(robot.round_corners, 2);  // fixed on a robot: not ROS parameters
+  EXPECT_EQ(robot.smooth_tolerance, 0.1);
+  EXPECT_EQ(robot.cost_factor, 0.8);  // navfn's weighting of the costmap
   EXPECT_TRUE(robot.allow_unknown);
   const eaci::Parameters paper;  // the paper's colony stays
   EXPECT_EQ(robot.ants, paper.ants);
@@ -541,7 +547,8 @@ TEST(PlannerOptions, TheRobotReadyDefaults) {
   EXPECT_EQ(robot.alpha, paper.alpha);
   EXPECT_EQ(robot.beta, paper.beta);
   EXPECT_EQ(robotDefaultsSummary(),
-            "allow_unknown true, early_stop_iterations 10, region_margin 4, smooth_path true, stop_gap 0.01");
+            "allow_unknown true, cost_factor 0.8, early_stop_iterations 10, region_margin 4, round_corners 2, "
+            "smooth_path true, smooth_tolerance 0.1, stop_gap 0.01");
 }
 
 // A colony configured for a million iterations with no limit stops at ~cancel with the best
