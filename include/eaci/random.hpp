@@ -1,7 +1,8 @@
-// Reproducible random numbers (the ants, the simulated wheel encoders): one stream per (seed,
+// Reproducible random numbers (the ants, the simulated wheel encoders and laser): one stream per (seed,
 // iteration, ant), so a run gives the same result whatever the number of threads the ants run on.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace eaci {
@@ -25,6 +26,14 @@ class SplitMix64 {
  private:
   std::uint64_t state_;
 };
+
+// A standard normal draw (Box-Muller from two uniforms): the same numbers for a seed on every
+// platform, unlike std::normal_distribution (the simulated encoders' and laser's noise).
+inline double standardNormal(SplitMix64& random) {
+  const double u1 = 1.0 - random.uniform();  // (0, 1], so the log is finite
+  const double u2 = random.uniform();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586476925 * u2);
+}
 
 // The stream of ant `ant` in iteration `iteration` of a run seeded with `seed`.
 inline SplitMix64 antStream(std::uint64_t seed, std::uint64_t iteration, std::uint64_t ant) {

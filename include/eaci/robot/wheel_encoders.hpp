@@ -107,9 +107,7 @@ class WheelEncoders {
   // Standard normal (Box-Muller from two uniforms) or uniform in [-1, 1].
   double unitNoise() {
     if (params_.noise == EncoderNoise::kUniform) return 2.0 * rng_.uniform() - 1.0;
-    const double u1 = 1.0 - rng_.uniform();  // (0, 1], so the log is finite
-    const double u2 = rng_.uniform();
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
+    return standardNormal(rng_);
   }
 
   EncoderParams params_;
