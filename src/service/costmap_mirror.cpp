@@ -61,6 +61,20 @@ bool CostmapMirror::syncRow(const CostmapView& costmap, int y, int x0, int x1) {
   return true;
 }
 
+bool CostmapMirror::syncRows(const CostmapView& costmap, int y0, int y1, int x0, int x1, eaci::StopPoll& poll,
+                             Sync& done) {
+  for (int y = y0; y < y1; ++y) {
+    if (poll.stopped()) {
+      done.stopped = true;
+      return false;
+    }
+    done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
+    ++done.rows_read;
+    poll.tick(static_cast<std::size_t>(x1 - x0));
+  }
+  return true;
+}
+
 CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const CostmapChanges& changes,
                                         const eaci::CellInterpretation& interpretation, bool allow_corner_cutting,
                                         eaci::CostRule rule, const std::function<bool()>& should_stop) {
@@ -75,13 +89,10 @@ CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const Costma
         beginAfresh(costmap, interpretation, allow_corner_cutting, rule);
       } else {  // the rows made before the stop, compared: nothing is known of what changed since
         restore();
-        for (int y = 0; y < rows_made_ && !poll.stopped(); ++y) {
-          done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
-          poll.tick(static_cast<std::size_t>(width));
-        }
+        syncRows(costmap, 0, rows_made_, 0, width, poll, done);
       }
       const int before = rows_made_;
-      done.stopped = poll.stopped() || !makeRows(costmap, poll);
+      done.stopped = done.stopped || !makeRows(costmap, poll);
       done.afresh = true;
       done.rows_read = static_cast<std::size_t>(rows_made_);
       done.rows_changed += static_cast<std::size_t>(rows_made_ - before);
@@ -93,30 +104,13 @@ CostmapMirror::Sync CostmapMirror::sync(const CostmapView& costmap, const Costma
   }
   restore();
   if (!changes.known) {
-    for (int y = 0; y < height; ++y) {
-      if (poll.stopped()) {
-        done.stopped = true;
-        return done;
-      }
-      done.rows_changed += syncRow(costmap, y, 0, width) ? 1 : 0;
-      ++done.rows_read;
-      poll.tick(static_cast<std::size_t>(width));
-    }
+    syncRows(costmap, 0, height, 0, width, poll, done);
     return done;
   }
   for (const BufferRect& rect : changes.rects) {
     const int x0 = std::max(0, rect.x0), x1 = std::min(width, rect.x1);
     const int y0 = std::max(0, rect.y0), y1 = std::min(height, rect.y1);
-    if (x0 >= x1) continue;
-    for (int y = y0; y < y1; ++y) {
-      if (poll.stopped()) {
-        done.stopped = true;
-        return done;
-      }
-      done.rows_changed += syncRow(costmap, y, x0, x1) ? 1 : 0;
-      ++done.rows_read;
-      poll.tick(static_cast<std::size_t>(x1 - x0));
-    }
+    if (x0 < x1 && !syncRows(costmap, y0, y1, x0, x1, poll, done)) return done;
   }
   const std::size_t audit_rows =
       std::min(static_cast<std::size_t>(height), std::max<std::size_t>(1, audit_bytes_ / static_cast<std::size_t>(width)));

@@ -81,6 +81,9 @@ class CostmapMirror {
   bool makeRows(const CostmapView& costmap, eaci::StopPoll& poll);
   // Copies and interprets columns [x0, x1) of buffer row `y` if they differ from the copy.
   bool syncRow(const CostmapView& costmap, int y, int x0, int x1);
+  // syncRow for rows y0 .. y1 - 1, counted in `done` (rows read and changed), `poll` ticked with
+  // the bytes of each; false, with done.stopped set, once it says stop.
+  bool syncRows(const CostmapView& costmap, int y0, int y1, int x0, int x1, eaci::StopPoll& poll, Sync& done);
   // The grid row (row 0 = top) of buffer row `y` of the copy.
   int gridRow(int y) const { return copy_.order == eaci::RowOrder::kTopFirst ? y : copy_.frame.height - 1 - y; }
   bool sameSetting(const CostmapView& costmap, const eaci::CellInterpretation& interpretation,
