@@ -137,3 +137,20 @@ TEST(PathMetrics, MeanCellCostOfAHandBuiltCostGrid) {
   grid.setBlocked(Cell{0, 1}, true);
   EXPECT_TRUE(std::isnan(eaci::meanCellCost(grid, {{0, 0}, {0, 1}})));  // not a route
 }
+
+TEST(LineClearance, IsLookedForWithinTheReachOnly) {
+  // One obstacle at (3,5) in an open 10 x 10 grid; the segment (0,0) -> (0,8) passes 3 from it
+  // (at (0,5)), the segment (0,0) -> (6,0) 5 (at (3,0)); the cell (0,0) sqrt(9 + 25). Points are
+  // (column, row).
+  CostGrid grid = CostGrid::fromRows(std::vector<std::vector<int>>(10, std::vector<int>(10, 0)), false);
+  grid.setBlocked(Cell{3, 5}, true);
+  EXPECT_DOUBLE_EQ(eaci::segmentClearanceWithin(grid, {0.0, 0.0}, {8.0, 0.0}, 10.0), 3.0);
+  EXPECT_DOUBLE_EQ(eaci::segmentClearanceWithin(grid, {0.0, 0.0}, {8.0, 0.0}, 2.5), 2.5);  // beyond the reach
+  EXPECT_DOUBLE_EQ(eaci::segmentClearanceWithin(grid, {0.0, 0.0}, {0.0, 6.0}, 10.0), 5.0);
+  // The polyline's: its nearest segment's, and a corner's own (a polyline of one cell).
+  EXPECT_DOUBLE_EQ(eaci::polylineClearanceWithin(grid, {{6, 0}, {0, 0}, {0, 8}}, 10.0), 3.0);
+  EXPECT_DOUBLE_EQ(eaci::polylineClearanceWithin(grid, {{0, 0}}, 10.0), std::sqrt(34.0));
+  EXPECT_DOUBLE_EQ(eaci::polylineClearanceWithin(grid, {{0, 0}}, 4.0), 4.0);
+  // minPolylineClearance, looking as far as the distance transform says, agrees.
+  EXPECT_DOUBLE_EQ(eaci::minPolylineClearance(grid, CellPath{{6, 0}, {0, 0}, {0, 8}}), 3.0);
+}

@@ -242,19 +242,41 @@ TEST(Smoothing, RoundCornersPassesNoNearerTheWallsThanTheBend) {
   EXPECT_EQ(eaci::roundCorners(grid, corner, 2, 1.0), (CellPath{{5, 1}, {5, 32}, {7, 34}, {33, 34}}));
 }
 
+TEST(Smoothing, RoundCornersPassesNoNearerAnObstacleThanTheCornerItCutsOff) {
+  // A 21 x 21 grid, every cell cost 100 (all in an obstacle's band), one post at (2,4) beside
+  // the first leg of the corner (0,10) between (0,0) and (10,10), as a door post beside a route
+  // that turns after the door. Every cut is shorter and as dear a cell, so the cost rule allows
+  // each; the clearance decides. d = 5: the corner cut off, (0,5) (0,10) (5,10), keeps
+  // sqrt 5 = 2.24 from the post (at (0,5)); the cut (0,5) -> (5,10) turns towards it and passes
+  // 3 / sqrt 2 = 2.12 from it: not taken (the route itself passes 2 from it, at (0,4): a rule
+  // against the whole route's clearance would take it). d = 2.5: the corner (0,8) (0,10) (3,10)
+  // and the cut (0,8) -> (3,10) both keep sqrt 20 = 4.47 (at (0,8)): taken.
+  CostGrid grid = open(21, 21);
+  for (int r = 0; r < 21; ++r)
+    for (int c = 0; c < 21; ++c) grid.setCost(Cell{r, c}, 100);
+  grid.setBlocked(Cell{2, 4}, true);
+  const CellPath corner{{0, 0}, {0, 10}, {10, 10}};
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 1, 0.1), (CellPath{{0, 0}, {0, 8}, {3, 10}, {10, 10}}));
+  // Without the post the first cut is taken, as on the open grid.
+  grid.setBlocked(Cell{2, 4}, false);
+  grid.setCost(Cell{2, 4}, 100);
+  EXPECT_EQ(eaci::roundCorners(grid, corner, 1, 0.1), (CellPath{{0, 0}, {0, 5}, {5, 10}, {10, 10}}));
+}
+
 TEST(Smoothing, PlannerRoundsCornersWhenAsked) {
-  // The L corridor of lCorridorWithBand. The route from (5,0) to (39,34) turns at the bend in two 45-degree corners one diagonal cell apart, down
-  // the middle. Cutting the bend costs more than going round it (the cut passes nearer the
-  // inner corner, through dearer cells): with a tolerance of 10 % the planner's smoothed route
-  // with round_corners is its route without, rounded (roundCorners, tested above by hand), the
-  // bend's corners moved apart, and it still passes only free cells.
+  // The L corridor of lCorridorWithBand, from (5,0) to (39,31) in the band at the map's bottom
+  // edge. The route turns round the inner corner in two 45-degree corners one diagonal cell
+  // apart, down the corridor's middle, and bends again before the goal. With a tolerance of
+  // 10 % the planner's smoothed route with round_corners is its route without, rounded
+  // (roundCorners, tested above by hand: the bend round the inner corner stays, every cut of
+  // it passing nearer the corner; the one before the goal is cut), and it passes only free cells.
   const CostGrid grid = lCorridorWithBand();
   eaci::Parameters p;
   p.smooth_path = true;
   p.smooth_tolerance = 0.1;
-  const eaci::PlanResult plain = eaci::plan(grid, Cell{5, 0}, Cell{39, 34}, eaci::Algorithm::kAStar, p);
+  const eaci::PlanResult plain = eaci::plan(grid, Cell{5, 0}, Cell{39, 31}, eaci::Algorithm::kAStar, p);
   p.round_corners = 1;
-  const eaci::PlanResult rounded = eaci::plan(grid, Cell{5, 0}, Cell{39, 34}, eaci::Algorithm::kAStar, p);
+  const eaci::PlanResult rounded = eaci::plan(grid, Cell{5, 0}, Cell{39, 31}, eaci::Algorithm::kAStar, p);
   ASSERT_TRUE(plain.success());
   ASSERT_TRUE(rounded.success());
   EXPECT_EQ(rounded.path, plain.path);  // the search's route is unchanged

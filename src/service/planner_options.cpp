@@ -57,6 +57,7 @@ eaci::Parameters rosDefaultParameters() {
   params.smooth_path = true;    // robots drive the smoothed route,
   params.round_corners = 2;     // its corners cut in two passes (a 90-degree bend becomes two of about 45),
   params.smooth_tolerance = 0.1;  // each cut through cells at most 10 % costlier than the corner it cuts off
+                                  // (and never nearer an obstacle than it: path/smoothing.hpp)
   params.early_stop_iterations = 10;
   params.stop_gap = 0.01;
   params.region_margin = 4;

@@ -15,6 +15,7 @@
 #include "eaci/grid/cell_point.hpp"
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/distance_transform.hpp"
+#include "eaci/grid/line_clearance.hpp"
 #include "eaci/grid/moves.hpp"
 
 namespace eaci {
@@ -83,14 +84,13 @@ inline double minClearance(const CostGrid& grid, const CellPath& route) {
 // straight segments between cell centres: where the robot drives) to the centre of the nearest
 // obstacle cell; minClearance's measure, but along the lines and not only at cell centres (a
 // line between two cells may pass nearer a wall than either centre). Exact: the lines are cut
-// into pieces of at most 4 cells, and each piece measures against every obstacle cell that could
-// be nearer it than the best so far (within its start's clearance, bounded by the distance
-// transform, plus half its length of its middle). +infinity without obstacles or corners;
-// segments with a corner off the grid are skipped. The corners may lie off the cell centres
-// (CellPolyline, grid/cell_point.hpp).
+// into pieces of at most 4 cells, and each piece looks for obstacles (segmentClearanceWithin,
+// grid/line_clearance.hpp) no farther than its start's clearance (from the distance transform,
+// plus 0.71 for a start off its cell's centre) or the best so far. +infinity without obstacles
+// or corners; segments with a corner off the grid are skipped. The corners may lie off the cell
+// centres (CellPolyline, grid/cell_point.hpp).
 inline double minPolylineClearance(const CostGrid& grid, const CellPolyline& corners,
                                    const ObstacleDistances& distances) {
-  const std::vector<std::uint8_t>& obstacle = distances.obstacle;
   const std::vector<double>& squared = distances.squared;
   const auto distanceAt = [&](const Eigen::Vector2d& p) {  // from p's cell's centre
     const Cell c = cellOfPoint(p);
@@ -106,23 +106,8 @@ inline double minPolylineClearance(const CostGrid& grid, const CellPolyline& cor
     for (int i = 0; i < pieces; ++i) {
       const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(i) / pieces);
       const Eigen::Vector2d q = a + (b - a) * (static_cast<double>(i + 1) / pieces);
-      // The piece's nearest obstacle lies within (p's distance, at most its cell's + 0.71) + |pq|
-      // of its middle, and no nearer than best matters.
-      const double reach = std::min(distanceAt(p) + 0.71, best) + (q - p).norm() / 2 + 1e-9;
-      if (!std::isfinite(reach)) continue;
-      const Eigen::Vector2d m = (p + q) / 2, d = q - p;
-      const double length2 = d.squaredNorm();
-      const int r0 = std::max(0, static_cast<int>(std::floor(m.y() - reach)));
-      const int r1 = std::min(grid.height() - 1, static_cast<int>(std::ceil(m.y() + reach)));
-      const int c0 = std::max(0, static_cast<int>(std::floor(m.x() - reach)));
-      const int c1 = std::min(grid.width() - 1, static_cast<int>(std::ceil(m.x() + reach)));
-      for (int r = r0; r <= r1; ++r)
-        for (int c = c0; c <= c1; ++c) {
-          if (obstacle[grid.index(Cell{r, c})] == 0) continue;
-          const Eigen::Vector2d o(c, r);
-          const double t = length2 > 0 ? std::clamp((o - p).dot(d) / length2, 0.0, 1.0) : 0.0;
-          best = std::min(best, (p + t * d - o).norm());
-        }
+      const double reach = std::min(distanceAt(p) + 0.71, best) + 1e-9;  // the piece's nearest obstacle is within it
+      if (std::isfinite(reach)) best = std::min(best, segmentClearanceWithin(grid, p, q, reach));
     }
   }
   return best;

@@ -18,6 +18,7 @@
 
 #include "eaci/grid/cost_grid.hpp"
 #include "eaci/grid/end_headings.hpp"
+#include "eaci/grid/line_clearance.hpp"
 #include "eaci/grid/segment_walk.hpp"
 #include "eaci/parallel/stop_poll.hpp"
 
@@ -159,6 +160,10 @@ inline Cell cellTowards(Cell from, Cell to, double distance) {
 // smoother often turns through 90 degrees in two 45-degree corners one diagonal cell apart.
 inline constexpr double kBendCornerSpacing = 3.0;
 
+// Corner rounding looks this far (cells) for the clearance a cut has to keep: a bend in the cost
+// band of a costmap's inflation is nearer a wall than that.
+inline constexpr double kCornerClearanceReach = 32.0;
+
 // Rounds the bends of a smoothed route (smoothRoute's kept cells), `passes` times, each pass
 // bend by bend from the start. A bend is a corner, or corners less than kBendCornerSpacing
 // apart, v_i .. v_j between p (before it) and n (after it). It is cut off by one segment from
@@ -167,8 +172,12 @@ inline constexpr double kBendCornerSpacing = 3.0;
 // off, a v_i .. v_j b, as the stretch replaced: it touches no obstacle, costs up to
 // (1 + tolerance) x as much as p v_i .. v_j n, and the cut a -> b enters no cell costlier than
 // (1 + tolerance) x the costliest of the corner (not of the whole stretch from p, which may
-// start in the band: the rounded route passes at most ln(1 + tolerance) / k nearer the walls
-// than the bend did, which keeps the car's clearance; issue #30). d is
+// start in the band; issue #30), and, where the corner is in an obstacle's cost band, passes no
+// nearer an obstacle than the corner it cuts off does, up to kCornerClearanceReach (the one
+// clearance measure, grid/line_clearance.hpp): the rounded route's clearance is never below
+// the route's, and a cut that would start beside a door post and turn towards it starts
+// farther on (the cost rule alone let such cuts pass door posts 2 cm nearer than the bend,
+// and the car, cutting inside the bend, nearer still). d is
 // the largest allowed of d_max, d_max / 2, d_max / 4, ... down to one cell, d_max = min(|v_i p|,
 // |v_j n| / 2) (|v_i p| is what the previous cut left of that segment; half of v_j n is left
 // for the next bend). A pass splits a bend's turn in two (90 degrees become two corners of
@@ -195,6 +204,11 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
       bool cut = false;
       const std::size_t walk = static_cast<std::size_t>(to_p + to_n) + 1;
       const bool last_bend = j + 2 == route.size();
+      // Whether the cut a -> b passes no nearer an obstacle than the corner it cuts off.
+      const auto keepsClearance = [&](const CellPath& corner, Cell a, Cell b) {
+        const double keep = polylineClearanceWithin(grid, corner, kCornerClearanceReach);
+        return segmentClearanceWithin(grid, cellPoint(a), cellPoint(b), keep) >= keep - 1e-9;
+      };
       if (!(keep_last_leg && last_bend) && (stop == nullptr || !stop->tick(walk))) {
         const SegmentCost bend = polylineCostAndPeak(grid, replaced);
         const double cost_bound = bend.cost * (1.0 + tolerance) + 1e-9;
@@ -205,11 +219,13 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
           CellPath corner{a};
           corner.insert(corner.end(), replaced.begin() + 1, replaced.end() - 1);
           corner.push_back(b);
-          const int peak_bound = std::min(
-              254, static_cast<int>(std::floor(polylineCostAndPeak(grid, corner).peak * (1.0 + tolerance) + 1e-9)));
+          const int corner_peak = polylineCostAndPeak(grid, corner).peak;
+          const int peak_bound = std::min(254, static_cast<int>(std::floor(corner_peak * (1.0 + tolerance) + 1e-9)));
           const SegmentCost chord = segmentCostAndPeak(grid, a, b);
           const double cut_cost = segmentCost(grid, p, a) + chord.cost + segmentCost(grid, b, n);
-          if (cut_cost <= cost_bound && chord.peak <= peak_bound) {
+          // A corner through cells of cost 0 alone is not measured: its cut, through cells of cost 0
+          // too, stays beyond every obstacle's cost band.
+          if (cut_cost <= cost_bound && chord.peak <= peak_bound && (corner_peak == 0 || keepsClearance(corner, a, b))) {
             rounded.push_back(a);
             rounded.push_back(b);
             cut = true;
