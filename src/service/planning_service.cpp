@@ -247,15 +247,14 @@ struct PlanningService::PlanState {
   using Clock = std::chrono::steady_clock;
   PlanState(const CostmapView& costmap_in, const PlanRequest& request_in, const Configuration& config_in,
             const std::function<bool()>& should_stop_in, const std::atomic<int>& stop_reason_in)
-      : costmap(costmap_in), frame(costmap_in.frame), request(request_in), config(config_in),
-        params(config_in.params), options(config_in.options), should_stop(should_stop_in),
+      : costmap(costmap_in), request(request_in), config(config_in), should_stop(should_stop_in),
         stop_reason(stop_reason_in) {}
   const CostmapView& costmap;
-  const eaci::MapFrame& frame;
   const PlanRequest& request;
   const Configuration& config;
-  const eaci::Parameters& params;
-  const RosPlannerOptions& options;
+  const eaci::MapFrame& frame() const { return costmap.frame; }
+  const eaci::Parameters& params() const { return config.params; }
+  const RosPlannerOptions& options() const { return config.options; }
   const std::function<bool()>& should_stop;  // asked by every loop that grows with the map
   const std::atomic<int>& stop_reason;       // why should_stop said stop, once it did
   PlanReply reply;
@@ -326,10 +325,10 @@ void PlanningService::renewWorkspaceIfSuspect() {
 std::optional<PlanningService::Refusal> PlanningService::checkCostmapAndParameters(PlanState& plan) {
   if (const std::string problem = costmapProblem(plan.costmap); !problem.empty())
     return Refusal{PlanOutcome::kBadCostmap, problem};
-  if (const std::string invalid = eaci::validationError(plan.params); !invalid.empty())
+  if (const std::string invalid = eaci::validationError(plan.params()); !invalid.empty())
     return Refusal{PlanOutcome::kBadParameters, "invalid parameter: " + invalid};
   plan.interpretation =
-      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(plan.params.lethal_cost), plan.params.allow_unknown);
+      eaci::CellInterpretation::costmap(static_cast<std::uint8_t>(plan.params().lethal_cost), plan.params().allow_unknown);
   plan.interpretation.unknown_value = kCostmapUnknown;
   return std::nullopt;
 }
@@ -338,12 +337,12 @@ std::optional<PlanningService::Refusal> PlanningService::readCostmap(PlanState& 
   // The planner's copy of the costmap, brought up to it where it changed; or, for a costmap
   // costmap_2d has emptied by a resize, the last filled one placed into its frame.
   const CostmapSource::Read read = source_.read(plan.costmap, changes, plan.interpretation,
-                                                plan.params.allow_corner_cutting, eaci::costRule(plan.params), rolling_,
+                                                plan.params().allow_corner_cutting, eaci::costRule(plan.params()), rolling_,
                                                 PlanState::Clock::now(), plan.should_stop);
   plan.changes_read = true;  // or, when stopped, put back for the next read (CostmapSource)
   if (read.synced.stopped)
     return plan.stoppedWhile("reading the costmap (" + std::to_string(read.synced.rows_read) + " of " +
-                             std::to_string(plan.frame.height) + " rows)");
+                             std::to_string(plan.frame().height) + " rows)");
   plan.mirror = read.mirror;
   plan.reply.stood_in_for_emptied = read.stood_in;
   plan.reply.phases.afresh = read.synced.afresh;
@@ -355,9 +354,9 @@ std::optional<PlanningService::Refusal> PlanningService::readCostmap(PlanState& 
 
 std::optional<PlanningService::Refusal> PlanningService::placeStart(PlanState& plan) {
   const PlanRequest& request = plan.request;
-  const auto start_cell = plan.frame.worldToCell(request.start);
+  const auto start_cell = plan.frame().worldToCell(request.start);
   if (!start_cell) return Refusal{PlanOutcome::kStartOffMap, "start " + where(request.start) + " is off the costmap"};
-  const auto goal_cell = plan.frame.worldToCell(request.goal);
+  const auto goal_cell = plan.frame().worldToCell(request.goal);
   if (!goal_cell) return Refusal{PlanOutcome::kGoalOffMap, "goal " + where(request.goal) + " is off the costmap"};
   plan.start_cell = *start_cell;
   plan.goal_cell = *goal_cell;
@@ -369,7 +368,7 @@ std::optional<PlanningService::Refusal> PlanningService::placeStart(PlanState& p
   plan.reply.start_cells_opened = check.cells_opened;
   if (check.cells_opened > 0)
     say(LogLevel::kInfo, "start " + where(request.start) + " is in the inflated band (cost " +
-                             std::to_string(check.start_cost) + ", lethal_cost " + std::to_string(plan.params.lethal_cost) +
+                             std::to_string(check.start_cost) + ", lethal_cost " + std::to_string(plan.params().lethal_cost) +
                              "): planning out of it by the cheapest way (" + std::to_string(check.cells_opened) +
                              " cells), as navfn plans from the robot's cell");
   plan.lap(plan.reply.phases.start);
@@ -384,7 +383,7 @@ std::optional<PlanningService::Refusal> PlanningService::placeGoal(PlanState& pl
   const eaci::GridView view = plan.mirror->view();
   plan.goal_free = view.isFree(plan.goal_cell);
   const std::optional<eaci::Cell> target =
-      eaci::nearestFreeCell(view, plan.goal_cell, plan.tolerance / plan.frame.resolution, plan.should_stop);
+      eaci::nearestFreeCell(view, plan.goal_cell, plan.tolerance / plan.frame().resolution, plan.should_stop);
   if (!target) {
     if (plan.stopped() != StopReason::kNone) return plan.stoppedWhile("looking for a free cell near the goal");
     return Refusal{PlanOutcome::kGoalBlocked, "goal " + where(plan.request.goal) +
@@ -397,22 +396,22 @@ std::optional<PlanningService::Refusal> PlanningService::placeGoal(PlanState& pl
 }
 
 std::optional<PlanningService::Refusal> PlanningService::searchRoute(PlanState& plan) {
-  useLandmarksFor(plan.frame, plan.options.landmarks);
+  useLandmarksFor(plan.frame(), plan.options().landmarks);
   eaci::PlanOptions plan_options;
-  plan_options.record_pheromone = plan.options.visualize_pheromone && plan.request.record_pheromone;
+  plan_options.record_pheromone = plan.options().visualize_pheromone && plan.request.record_pheromone;
   plan_options.workspace = workspace_.get();
   plan_options.should_stop = [&should_stop = plan.should_stop](int) { return should_stop(); };
   plan_options.never_worse_than_search = true;  // a lucky ant's detour never reaches the robot
   // With turn_cost > 0 the turn onto the goal's heading is priced too (grid angles are the
   // costmap frame's yaws, y up the rows); the robot's own heading is not (docs/ros.md).
-  plan_options.end_headings.goal = eaci::travelHeading(plan.request.goal_yaw, plan.options.orientation_mode);
+  plan_options.end_headings.goal = eaci::travelHeading(plan.request.goal_yaw, plan.options().orientation_mode);
   // The planners' grid, kept in the mirror: both plans of a goal tolerance and the flood between them search it.
   const eaci::CostGrid& grid = plan.mirror->grid();
   eaci::PlanResult& result = plan.reply.result;
-  result = eaci::plan(grid, plan.start_cell, plan.target, plan.options.algorithm, plan.params, plan_options);
+  result = eaci::plan(grid, plan.start_cell, plan.target, plan.options().algorithm, plan.params(), plan_options);
   plan.reply.phases.core = result.times;
   plan.phase_start = PlanState::Clock::now();
-  const double radius_cells = plan.tolerance / plan.frame.resolution;
+  const double radius_cells = plan.tolerance / plan.frame().resolution;
   if (result.status == eaci::PlanStatus::kNoPath && !result.interrupted && radius_cells >= 1) {
     const auto reachable =
         eaci::nearestReachableCell(grid, plan.start_cell, plan.goal_cell, radius_cells, plan.should_stop);
@@ -423,21 +422,21 @@ std::optional<PlanningService::Refusal> PlanningService::searchRoute(PlanState& 
                      "goal " + where(plan.request.goal) + " cannot be reached from the start, nor any cell within " +
                          eaci::formatNumber(plan.tolerance) + " m of it"};
     if (!(*reachable == plan.target)) {  // else the plan failed for another reason: its error stands
-      say(LogLevel::kInfo, "no route reaches " + where(plan.frame.cellToWorld(plan.target)) + ": planning to " +
-                               where(plan.frame.cellToWorld(*reachable)) +
+      say(LogLevel::kInfo, "no route reaches " + where(plan.frame().cellToWorld(plan.target)) + ": planning to " +
+                               where(plan.frame().cellToWorld(*reachable)) +
                                ", the cell nearest the goal within the tolerance that the start can reach");
       plan.target = *reachable;
-      result = eaci::plan(grid, plan.start_cell, plan.target, plan.options.algorithm, plan.params, plan_options);
+      result = eaci::plan(grid, plan.start_cell, plan.target, plan.options().algorithm, plan.params(), plan_options);
     }
   }
   plan.lap(plan.reply.phases.tolerance);
-  reportLandmarks(plan.frame);
+  reportLandmarks(plan.frame());
   if (result.interrupted) plan.reply.stopped_by = plan.stopped();
   if (result.success()) return std::nullopt;
   if (result.status != eaci::PlanStatus::kStopped) return Refusal{outcomeOf(result.status, plan.goal_free), result.error};
   if (plan.reply.stopped_by == StopReason::kTimeLimit)
     return Refusal{PlanOutcome::kTimeLimit, "no route found within max_planning_time (" +
-                                                eaci::formatNumber(plan.options.max_planning_time) + " s)"};
+                                                eaci::formatNumber(plan.options().max_planning_time) + " s)"};
   return Refusal{stoppedOutcome(plan.reply.stopped_by), std::string(toString(plan.reply.stopped_by)) + " after " +
                                                             std::to_string(result.iterations_run) +
                                                             " iterations, before a route was found"};
@@ -446,15 +445,15 @@ std::optional<PlanningService::Refusal> PlanningService::searchRoute(PlanState& 
 std::optional<PlanningService::Refusal> PlanningService::makePoses(PlanState& plan) {
   PlanReply& reply = plan.reply;
   const eaci::GridView view = plan.mirror->view();
-  const bool corner_cutting = plan.params.allow_corner_cutting;
+  const bool corner_cutting = plan.params().allow_corner_cutting;
   const std::string defect = routeDefect(view, reply.result.path, plan.start_cell, plan.target, corner_cutting);
   if (!defect.empty())
     return Refusal{PlanOutcome::kInternalError, "internal error: the planner's route is not drivable (" + defect + "); no plan"};
-  if (!(plan.target == plan.goal_cell)) reply.goal = plan.frame.cellToWorld(plan.target);
+  if (!(plan.target == plan.goal_cell)) reply.goal = plan.frame().cellToWorld(plan.target);
   // What goes out: the smoothed route's poses, every segment between two of them checked; if
   // the smoother got one wrong, the grid route's (just checked cell by cell).
   if (settings_.smoothed_path_hook) settings_.smoothed_path_hook(reply.result.smoothed_path);
-  const FinishedRoute finished = finishRoute(view, plan.frame, reply.result.smoothed_path, reply.result.path,
+  const FinishedRoute finished = finishRoute(view, plan.frame(), reply.result.smoothed_path, reply.result.path,
                                              plan.request.start, reply.goal, corner_cutting, settings_.poses_hook);
   plan.lap(reply.phases.finish);
   if (finished.poses.empty())
@@ -486,13 +485,13 @@ void PlanningService::recordPlan(const PlanState& plan) {
   record.start = plan.request.start;
   record.goal = plan.request.goal;
   record.tolerance = plan.tolerance;
-  record.outcome = describeOutcome(plan.reply.outcome, plan.reply.error, plan.reply.result, plan.frame.resolution);
+  record.outcome = describeOutcome(plan.reply.outcome, plan.reply.error, plan.reply.result, plan.frame().resolution);
   if (!plan.reply.ok() && settings_.save_costmap_on_failure && plan.mirror != nullptr &&
       !plan.mirror->costmap().cells.empty()) {
     ReplayJob job;
     job.prefix = "eaci_failed_plan";
-    job.params = plan.params;
-    job.algorithm = plan.options.algorithm;
+    job.params = plan.params();
+    job.algorithm = plan.options().algorithm;
     job.request = record;
     job.notes = replayNotes("the costmap of a failed plan", plan.config);
     job.costmap = plan.mirror->costmap();  // as planned on: a start in the band opened
