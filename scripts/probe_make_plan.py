@@ -103,8 +103,15 @@ def random_pairs(image, count, seed, min_obstacle_distance, min_separation):
     every occupied cell, at least min_separation apart."""
     rng = numpy.random.default_rng(seed)
     rows, cols = numpy.nonzero(image.free & (image.distance >= min_obstacle_distance))
-    pairs = []
+    if rows.size == 0:
+        raise SystemExit("probe_make_plan: no free cell %.2f m from every occupied cell (--min-obstacle-distance)"
+                         % min_obstacle_distance)
+    pairs, tries = [], 0
     while len(pairs) < count:
+        tries += 1
+        if tries > 1000 * count:
+            raise SystemExit("probe_make_plan: found %d of %d pairs %.2f m apart in %d tries: the free space is "
+                             "smaller; lower --min-separation" % (len(pairs), count, min_separation, tries - 1))
         a, b = rng.integers(rows.size, size=2)
         start, goal = image.centre(rows[a], cols[a]), image.centre(rows[b], cols[b])
         if math.dist(start, goal) >= min_separation:

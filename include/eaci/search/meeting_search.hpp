@@ -58,17 +58,19 @@ struct MeetingBounds {
   }
 
   // Half of (bound to the target - bound from the source) at cell `c` of grid index `index`:
-  // the potential the forward side adds and the backward side subtracts. With landmarks their
-  // bounds alone: on a cost map they are the stronger almost everywhere, and taking the larger
-  // of them and the octile distance at every label cost more than it saved (7 % of a plan on
-  // rooms of 0.16 M cells).
+  // the potential the forward side adds and the backward side subtracts. Each bound is the
+  // larger of the octile distance and the landmarks' (both consistent, so is their maximum):
+  // on rooms the landmarks' is the stronger almost everywhere, on SLAM maps' open halls and
+  // speckle often the octile distance (the landmarks' bounds alone there took a plan 1.2-1.4 x
+  // as long: docs/benchmarks.md, "Plan time on SLAM maps").
   double halfDifference(Cell c, std::size_t index) const {
+    const double octile_source = octileDistance(c, source), octile_target = octileDistance(c, target);
     if (landmarks != nullptr) {
       double marks_source, marks_target;
       landmarks->lowerBounds(landmarks->of(index), source_marks, target_marks, marks_source, marks_target);
-      return 0.5 * (marks_target - marks_source);
+      return 0.5 * (std::max(marks_target, octile_target) - std::max(marks_source, octile_source));
     }
-    return 0.5 * (octileDistance(c, target) - octileDistance(c, source));
+    return 0.5 * (octile_target - octile_source);
   }
 };
 
