@@ -164,6 +164,15 @@ inline constexpr double kBendCornerSpacing = 3.0;
 // band of a costmap's inflation is nearer a wall than that.
 inline constexpr double kCornerClearanceReach = 32.0;
 
+// Whether the cut a -> b passes no nearer an obstacle than the corner it cuts off, a v_i .. v_j
+// b, whose bend v_i .. v_j keeps `bend_clearance` (polylineClearanceWithin up to
+// kCornerClearanceReach: measured once a bend, the same for every cut of it).
+inline bool cutKeepsClearance(const CostGrid& grid, Cell a, Cell v_i, Cell v_j, Cell b, double bend_clearance) {
+  const double keep = segmentClearanceWithin(grid, cellPoint(v_j), cellPoint(b),
+                                             segmentClearanceWithin(grid, cellPoint(a), cellPoint(v_i), bend_clearance));
+  return segmentClearanceWithin(grid, cellPoint(a), cellPoint(b), keep) >= keep - 1e-9;
+}
+
 // Rounds the bends of a smoothed route (smoothRoute's kept cells), `passes` times, each pass
 // bend by bend from the start. A bend is a corner, or corners less than kBendCornerSpacing
 // apart, v_i .. v_j between p (before it) and n (after it). It is cut off by one segment from
@@ -204,10 +213,13 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
       bool cut = false;
       const std::size_t walk = static_cast<std::size_t>(to_p + to_n) + 1;
       const bool last_bend = j + 2 == route.size();
-      // Whether the cut a -> b passes no nearer an obstacle than the corner it cuts off.
-      const auto keepsClearance = [&](const CellPath& corner, Cell a, Cell b) {
-        const double keep = polylineClearanceWithin(grid, corner, kCornerClearanceReach);
-        return segmentClearanceWithin(grid, cellPoint(a), cellPoint(b), keep) >= keep - 1e-9;
+      double bend_clearance = -1.0;  // of route[i .. j], measured when a cut first asks
+      const auto keepsClearance = [&](Cell a, Cell b) {
+        if (bend_clearance < 0) {
+          const CellPath bend(route.begin() + static_cast<std::ptrdiff_t>(i), route.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+          bend_clearance = polylineClearanceWithin(grid, bend, kCornerClearanceReach);
+        }
+        return cutKeepsClearance(grid, a, route[i], route[j], b, bend_clearance);
       };
       if (!(keep_last_leg && last_bend) && (stop == nullptr || !stop->tick(walk))) {
         const SegmentCost bend = polylineCostAndPeak(grid, replaced);
@@ -225,7 +237,7 @@ inline CellPath roundCorners(const CostGrid& grid, const CellPath& corners, int 
           const double cut_cost = segmentCost(grid, p, a) + chord.cost + segmentCost(grid, b, n);
           // A corner through cells of cost 0 alone is not measured: its cut, through cells of cost 0
           // too, stays beyond every obstacle's cost band.
-          if (cut_cost <= cost_bound && chord.peak <= peak_bound && (corner_peak == 0 || keepsClearance(corner, a, b))) {
+          if (cut_cost <= cost_bound && chord.peak <= peak_bound && (corner_peak == 0 || keepsClearance(a, b))) {
             rounded.push_back(a);
             rounded.push_back(b);
             cut = true;

@@ -62,7 +62,7 @@ struct MeetingBounds {
   // larger of the octile distance and the landmarks' (both consistent, so is their maximum):
   // on rooms the landmarks' is the stronger almost everywhere, on SLAM maps' open halls and
   // speckle often the octile distance (the landmarks' bounds alone there took a plan 1.2-1.4 x
-  // as long: docs/benchmarks.md, "Plan time on SLAM maps").
+  // as long: docs/benchmarks.md, section 12).
   double halfDifference(Cell c, std::size_t index) const {
     const double octile_source = octileDistance(c, source), octile_target = octileDistance(c, target);
     if (landmarks != nullptr) {
