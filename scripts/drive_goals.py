@@ -13,7 +13,14 @@ without padding) to the centre of an occupied cell, less half a cell: contact me
 
 Every global plan published during a drive is checked too: its smallest centre clearance from the
 occupied cells, and it counts as invalid when that is below --plan-clearance (the car's inscribed
-radius with the footprint padding: inside it the costmap marks the cell lethal).
+radius with the footprint padding: inside it the costmap marks the cell lethal). And against the
+global costmap as move_base published it: a plan counts as through a lethal cell when one of its
+poses lies in a cell that was lethal both in the last costmap published before the plan and in the
+first after it (so a box that moved between the two does not count).
+
+When the car carries the simulated laser (diff_drive_sim with a world map), the world may hold
+obstacles the map does not (boxes, a moving box): the car's footprint clearance from all of them
+comes from diff_drive_sim's ~footprint_clearance, and a sample at 0 is a contact with the world.
 
 For a long replanning run (move_base with planner_frequency > 0), --duration keeps cycling through
 the goals until that many seconds have passed, and --memory-of samples a node's resident memory.
@@ -41,7 +48,9 @@ import rospy
 import yaml
 from actionlib_msgs.msg import GoalStatus
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
-from nav_msgs.msg import Odometry, Path
+from map_msgs.msg import OccupancyGridUpdate
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from std_msgs.msg import Float64
 
 LAB_GOALS = [(4.4, 2.6), (2.45, 1.5), (1.1, 2.2), (4.2, 0.5), (0.5, 2.6)]  # across the L, into the U, past the cubes
 HALF_LENGTH, HALF_WIDTH = 0.1325, 0.1025  # the WHEELTEC Mini car, 265 x 205 mm
@@ -91,13 +100,67 @@ class OccupiedCells:
         return min(centre, 0.6), min(float(np.min(outside)) - self.res / 2, 0.6)
 
 
+class PublishedCostmap:
+    """move_base's global costmap as published (the full grid and its updates), and the plans whose poses
+    fall in a cell lethal (100 on the topic: costmap_2d's 254) before and after each plan."""
+
+    def __init__(self, ns="/move_base/global_costmap"):
+        self.grid = None  # (info, numpy rows x cols) as last published
+        self.before = None  # the lethal mask of the costmap published before the current one
+        self.pending = []  # (stamp, [(x, y)], lethal mask before it) of plans awaiting the next costmap
+        self.lethal_plans = 0
+        self.checked = 0
+        rospy.Subscriber(ns + "/costmap", OccupancyGrid, self.on_costmap, queue_size=2)
+        rospy.Subscriber(ns + "/costmap_updates", OccupancyGridUpdate, self.on_update, queue_size=10)
+
+    def on_costmap(self, msg):
+        info = msg.info
+        self.grid = (info, np.array(msg.data, dtype=np.int8).reshape(info.height, info.width))
+        self.settle(msg.header.stamp.to_sec())
+
+    def on_update(self, msg):
+        if self.grid is None:
+            return
+        data = np.array(msg.data, dtype=np.int8).reshape(msg.height, msg.width)
+        self.grid[1][msg.y:msg.y + msg.height, msg.x:msg.x + msg.width] = data
+        self.settle(msg.header.stamp.to_sec())
+
+    def lethal(self):
+        return None if self.grid is None else (self.grid[1] == 100)
+
+    def settle(self, stamp):
+        """The costmap just published at `stamp` is the first after the pending plans made before it."""
+        now = self.lethal()
+        keep = []
+        for plan_stamp, poses, before in self.pending:
+            if plan_stamp > stamp or before is None:
+                keep.append((plan_stamp, poses, before if before is not None else now))
+                continue
+            self.checked += 1
+            info = self.grid[0]
+            for x, y in poses:
+                col = int(math.floor((x - info.origin.position.x) / info.resolution))
+                row = int(math.floor((y - info.origin.position.y) / info.resolution))
+                if 0 <= row < now.shape[0] and 0 <= col < now.shape[1] and before.shape == now.shape \
+                        and now[row, col] and before[row, col]:
+                    self.lethal_plans += 1
+                    break
+        self.pending = keep
+
+    def add_plan(self, stamp, poses):
+        self.pending.append((stamp, poses, self.lethal()))
+
+
 class Drive:
     def __init__(self, cells, plan_clearance):
         self.cells = cells
         self.plan_clearance = plan_clearance
         self.pose = None
+        self.costmap = PublishedCostmap()
+        self.world_seen = False
         self.reset()
         rospy.Subscriber("/diff_drive_sim/ground_truth", Odometry, self.on_truth, queue_size=50)
+        rospy.Subscriber("/diff_drive_sim/footprint_clearance", Float64, self.on_world_clearance, queue_size=50)
         self.plan_topics = []
         self.trace = []  # (t, x, y, yaw) of the true pose, every drive, for --trace
         self.plan_log = []  # (t, [(x, y), ...]) of every global plan, for --trace
@@ -108,6 +171,15 @@ class Drive:
         self.plans = 0
         self.invalid_plans = 0
         self.min_plan_clearance = float("inf")
+        self.min_world = float("inf")
+        self.world_contacts = 0
+        self.lethal_plans_before = self.costmap.lethal_plans
+
+    def on_world_clearance(self, msg):
+        self.world_seen = True
+        self.min_world = min(self.min_world, msg.data)
+        if msg.data <= 0:
+            self.world_contacts += 1
 
     def on_truth(self, msg):
         p, q = msg.pose.pose.position, msg.pose.pose.orientation
@@ -128,6 +200,7 @@ class Drive:
             if clearance < self.plan_clearance:
                 self.invalid_plans += 1
             self.plan_log.append((msg.header.stamp.to_sec(), [(p.pose.position.x, p.pose.position.y) for p in msg.poses]))
+            self.costmap.add_plan(msg.header.stamp.to_sec(), self.plan_log[-1][1])
 
     def watch_plans(self):
         """Counts the global planner's published plans (…/plan topics of move_base's global planner)."""
@@ -162,7 +235,7 @@ def goal_message(x, y, yaw):
 
 def per_goal(records):
     """{goal: (drives, reached, mean seconds of the reached, min centre clearance, min footprint clearance,
-    contact samples)} over a record list, in the order the goals first appear."""
+    contact samples with the map or the world)} over a record list, in the order the goals first appear."""
     table = {}
     for r in records:
         table.setdefault(tuple(r["goal"]), []).append(r)
@@ -172,7 +245,7 @@ def per_goal(records):
         summary[goal] = (len(rows), len(reached),
                          sum(r["seconds"] for r in reached) / len(reached) if reached else float("nan"),
                          min(r["min_centre_clearance_m"] for r in rows), min(r["min_footprint_clearance_m"] for r in rows),
-                         sum(r["contact_samples"] for r in rows))
+                         sum(r["contact_samples"] + r.get("world_contact_samples", 0) for r in rows))
     return summary
 
 
@@ -272,32 +345,42 @@ def main():
             start = time.time()
             client.send_goal(goal_message(gx, gy, yaw))
             finished = client.wait_for_result(rospy.Duration(args.timeout))
+            seconds = time.time() - start
             if not finished:
                 client.cancel_goal()
                 client.wait_for_result(rospy.Duration(5))
-            rospy.sleep(0.3)  # the last plan and poses arrive
+            rospy.sleep(1.2)  # the last plan and poses arrive, and the costmap published after it
             state = STATES.get(client.get_state(), str(client.get_state())) if finished else "TIMEOUT"
             error = math.dist(drive.pose[:2], (gx, gy))
-            record = dict(round=round_index + 1, goal=[gx, gy], state=state, seconds=round(time.time() - start, 1),
+            record = dict(round=round_index + 1, goal=[gx, gy], state=state, seconds=round(seconds, 1),
                           final_error_m=round(error, 3), plans=drive.plans,
                           min_centre_clearance_m=round(drive.min_centre, 3),
                           min_footprint_clearance_m=round(drive.min_footprint, 3), contact_samples=drive.contacts,
                           invalid_plans=drive.invalid_plans,
-                          min_plan_clearance_m=round(drive.min_plan_clearance, 3) if drive.plans else None)
+                          min_plan_clearance_m=round(drive.min_plan_clearance, 3) if drive.plans else None,
+                          plans_through_lethal=drive.costmap.lethal_plans - drive.lethal_plans_before)
+            if drive.world_seen:
+                record.update(min_world_clearance_m=round(drive.min_world, 3), world_contact_samples=drive.world_contacts)
             records.append(record)
             print("round %d goal (%.2f, %.2f): %s in %.1f s, %.3f m from the goal, %d plans, min clearance centre "
-                  "%.3f m, footprint %.3f m, %d contact samples, %d invalid plans" % (
+                  "%.3f m, footprint %.3f m, %d contact samples, %d invalid plans, %d through a lethal cell%s" % (
                       round_index + 1, gx, gy, state, record["seconds"], error, drive.plans, drive.min_centre,
-                      drive.min_footprint, drive.contacts, drive.invalid_plans), flush=True)
+                      drive.min_footprint, drive.contacts, drive.invalid_plans, record["plans_through_lethal"],
+                      "; world (boxes too): footprint %.3f m, %d contact samples" % (drive.min_world, drive.world_contacts)
+                      if drive.world_seen else ""), flush=True)
             drive.watch_plans()
     reached = sum(r["state"] == "SUCCEEDED" for r in records)
     print("reached %d of %d goals; min clearance centre %.3f m, footprint %.3f m; %d contact samples" % (
         reached, len(records), min(r["min_centre_clearance_m"] for r in records),
         min(r["min_footprint_clearance_m"] for r in records), sum(r["contact_samples"] for r in records)))
     plan_clearances = [r["min_plan_clearance_m"] for r in records if r["min_plan_clearance_m"] is not None]
-    print("%d global plans, %d invalid (a pose nearer than %.3f m to an occupied cell); min plan clearance %s" % (
-        sum(r["plans"] for r in records), sum(r["invalid_plans"] for r in records), args.plan_clearance,
-        "%.3f m" % min(plan_clearances) if plan_clearances else "-"))
+    print("%d global plans, %d invalid (a pose nearer than %.3f m to an occupied cell); min plan clearance %s; "
+          "%d of %d checked against the costmap through a lethal cell" % (
+              sum(r["plans"] for r in records), sum(r["invalid_plans"] for r in records), args.plan_clearance,
+              "%.3f m" % min(plan_clearances) if plan_clearances else "-", drive.costmap.lethal_plans, drive.costmap.checked))
+    if drive.world_seen:
+        print("world (boxes too): min footprint clearance %.3f m, %d contact samples" % (
+            min(r["min_world_clearance_m"] for r in records), sum(r["world_contact_samples"] for r in records)))
     if memory:
         after_minute = [kib for t, kib in memory if t >= 60.0]
         print("%s resident memory: %.1f MiB at start, %s, %.1f MiB at the end (%d samples)" % (

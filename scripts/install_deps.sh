@@ -16,7 +16,7 @@ packages=(build-essential cmake pkg-config libyaml-cpp-dev libeigen3-dev libcli1
 $cli_only || packages+=(libgtest-dev libbenchmark-dev python3-pandas python3-matplotlib)
 if ! $cli_only && [ "${EACI_WITH_ROS:-ON}" != "OFF" ]; then
   packages+=(catkin python3-catkin-pkg libroscpp-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev libstd-srvs-dev python3-std-srvs
-             libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev libvisualization-msgs-dev
+             libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev pluginlib-dev libvisualization-msgs-dev libsensor-msgs-dev
              rospack-tools python3-rospkg python3-roslaunch python3-rosmaster python3-rostest rosout tf2-tools
              python3-rospy python3-std-msgs python3-nav-msgs
              libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure)

@@ -1,28 +1,87 @@
 // diff_drive_sim: the paper's WHEELTEC car as a simulated differential-drive robot.
 // Integrates Eq. 5-7 (eaci::robot::DiffDriveRobot) from cmd_vel, simulates wheel encoders and
 // publishes their dead-reckoning odometry on `odom` with the odom -> base_link transform, and
-// the true pose on `~ground_truth`.
+// the true pose on `~ground_truth`. Given a world map, it carries the paper's laser (an M10P,
+// eaci::robot::LaserSpec) and publishes its scans on `scan`, ray-cast from the true pose on that
+// map and on boxes the map does not hold (eaci::robot::SimWorld), and how near the car's
+// footprint comes to any of it on `~footprint_clearance` (0 = contact).
 //
 //   ~rate (50 Hz), ~cmd_timeout (0.5 s: stop without fresh commands)
 //   ~wheel_base, ~wheel_radius, ~max_wheel_speed, ~max_wheel_accel (robot, m and s)
 //   ~ticks_per_revolution (1560), ~encoder_noise_ticks (0), ~seed (1)
-//   ~initial_x, ~initial_y, ~initial_yaw (pose in the odom frame), ~odom_frame, ~base_frame
+//   ~initial_x, ~initial_y, ~initial_yaw (pose in the odom frame, which starts on the world's), ~odom_frame, ~base_frame
+//   ~world_map: a map_server YAML of the world the laser sees ("" = no laser); its occupied cells
+//     are obstacles, unknown and free ones are not
+//   ~boxes: [[x, y, size_x, size_y], ...] more obstacles (m, world frame, axis-aligned)
+//   ~moving_box: [x, y, size_x, size_y, to_x, to_y, speed]: a box going from (x, y) to (to_x, to_y)
+//     and back at speed m/s from the node's start; it waits while its next step would bring it
+//     nearer the car's footprint than ~moving_box_margin (0.1 m), as a person would
+//   ~laser_frame ("laser", at ~laser_height 0.18 m above base_link), ~scan_rate (12 Hz),
+//     ~range_max (30 m), ~range_sigma (0.015 m: the M10P's +-3 cm as two standard deviations)
+//   ~footprint_length, ~footprint_width (0.265, 0.205 m: the car, for ~footprint_clearance)
+//   ~world_frame ("map"): the frame of the boxes' markers on ~boxes (visualization_msgs/MarkerArray)
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Float64.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "eaci/io/map_io.hpp"
 #include "eaci/robot/diff_drive.hpp"
+#include "eaci/robot/laser_scan.hpp"
+#include "eaci/robot/sim_world.hpp"
 #include "eaci/robot/wheel_encoders.hpp"
 
 namespace eaci_ros {
 
 using eaci::robot::Pose2;
+
+// ~boxes and ~moving_box as the core's boxes; a clear error for a malformed entry.
+std::vector<eaci::robot::Box> readBoxes(const ros::NodeHandle& nh) {
+  std::vector<eaci::robot::Box> boxes;
+  XmlRpc::XmlRpcValue list;
+  if (!nh.getParam("boxes", list)) return boxes;
+  const auto number = [](XmlRpc::XmlRpcValue& v) {
+    if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<double>(static_cast<int>(v));
+    if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
+    throw std::invalid_argument("~boxes: every value must be a number");
+  };
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) throw std::invalid_argument("~boxes must be a list of [x, y, size_x, size_y]");
+  for (int i = 0; i < list.size(); ++i) {
+    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeArray || list[i].size() != 4)
+      throw std::invalid_argument("~boxes: entry " + std::to_string(i) + " is not [x, y, size_x, size_y]");
+    boxes.push_back({Eigen::Vector2d(number(list[i][0]), number(list[i][1])),
+                     Eigen::Vector2d(number(list[i][2]), number(list[i][3]))});
+  }
+  return boxes;
+}
+
+std::optional<eaci::robot::MovingBox> readMovingBox(const ros::NodeHandle& nh) {
+  std::vector<double> v;
+  if (!nh.getParam("moving_box", v)) return std::nullopt;
+  if (v.size() != 7) throw std::invalid_argument("~moving_box must be [x, y, size_x, size_y, to_x, to_y, speed]");
+  return eaci::robot::MovingBox{{Eigen::Vector2d(v[0], v[1]), Eigen::Vector2d(v[2], v[3])}, Eigen::Vector2d(v[4], v[5]), v[6]};
+}
+
+// The world map's occupied cells (occupancy maps: 100; maps of costs: lethal and above).
+std::vector<std::uint8_t> occupiedCells(const eaci::OccupancyMap& map) {
+  std::vector<std::uint8_t> occupied(map.cells.size(), 0);
+  const std::uint8_t threshold = map.values == eaci::CellValues::kOccupancy ? eaci::kOccupiedValue : eaci::kDefaultLethalCost;
+  for (std::size_t i = 0; i < map.cells.size(); ++i)
+    occupied[i] = map.cells[i] != eaci::kUnknownValue && map.cells[i] >= threshold;
+  return occupied;
+}
 
 class DiffDriveSim {
  public:
@@ -50,6 +109,8 @@ class DiffDriveSim {
     private_nh_.param("rate", rate, rate);
     private_nh_.param("cmd_timeout", cmd_timeout_, 0.5);
     if (!(rate > 0)) throw std::invalid_argument("~rate must be > 0");
+
+    setUpLaser();
 
     robot_ = eaci::robot::DiffDriveRobot(robot, start);
     encoders_ = eaci::robot::WheelEncoders(encoders);
@@ -81,6 +142,101 @@ class DiffDriveSim {
     const auto twist = robot_.twist();
     truth_pub_.publish(odometryMessage(robot_.pose(), twist.v, twist.omega, now));
     broadcastTransform(estimate, now);
+    if (world_) sense(now, dt);
+  }
+
+  void setUpLaser() {
+    std::string world_map;
+    private_nh_.param<std::string>("world_map", world_map, "");
+    if (world_map.empty()) return;
+    const eaci::OccupancyMap map = eaci::loadMapServerYaml(world_map);
+    world_.emplace(map, occupiedCells(map), readBoxes(private_nh_), readMovingBox(private_nh_));
+    private_nh_.param<std::string>("laser_frame", laser_frame_, "laser");
+    private_nh_.param<std::string>("world_frame", world_frame_, world_frame_);
+    private_nh_.param("scan_rate", laser_.scan_rate, laser_.scan_rate);
+    private_nh_.param("range_max", laser_.range_max, laser_.range_max);
+    private_nh_.param("range_sigma", laser_.range_sigma, laser_.range_sigma);
+    private_nh_.param("laser_height", laser_.mount_height, laser_.mount_height);
+    int seed = 1;
+    private_nh_.param("seed", seed, seed);
+    laser_.seed = static_cast<std::uint64_t>(seed) + 1;
+    const std::string error = eaci::robot::validationError(laser_);
+    if (!error.empty()) throw std::invalid_argument("laser: " + error);
+    noise_ = eaci::SplitMix64(laser_.seed);
+    double length = 0.265, width = 0.205;
+    private_nh_.param("footprint_length", length, length);
+    private_nh_.param("footprint_width", width, width);
+    private_nh_.param("moving_box_margin", box_margin_, box_margin_);
+    footprint_half_ = Eigen::Vector2d(length / 2, width / 2);
+    scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 5);
+    clearance_pub_ = private_nh_.advertise<std_msgs::Float64>("footprint_clearance", 50);
+    boxes_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("boxes", 2, true);
+    started_ = ros::Time::now();
+
+    geometry_msgs::TransformStamped mount;
+    mount.header.stamp = started_;
+    mount.header.frame_id = base_frame_;
+    mount.child_frame_id = laser_frame_;
+    mount.transform.translation.z = laser_.mount_height;
+    mount.transform.rotation.w = 1.0;
+    static_broadcaster_.sendTransform(mount);
+    ROS_INFO("diff_drive_sim: a laser on %s at %.0f Hz sees %s and %zu boxes%s", laser_frame_.c_str(), laser_.scan_rate,
+             world_map.c_str(), world_->boxesAt(0).size(), readMovingBox(private_nh_) ? ", one of them moving" : "");
+  }
+
+  // The footprint's clearance every tick; a scan and the boxes when one is due.
+  void sense(const ros::Time& now, double dt) {
+    // The moving box's clock runs while the box keeps more than its margin from the car.
+    const Pose2& car = robot_.pose();
+    const auto next = world_->movingBoxAt(box_clock_ + dt);
+    if (next && eaci::robot::quadDistance(eaci::robot::corners(car, footprint_half_), eaci::robot::corners(*next)) > box_margin_)
+      box_clock_ += dt;
+    const double t = box_clock_;
+    std_msgs::Float64 clearance;
+    clearance.data = world_->footprintClearance(robot_.pose(), footprint_half_, t, 1.0);
+    clearance_pub_.publish(clearance);
+    if (!next_scan_.isZero() && now < next_scan_) return;
+    // Scans keep the laser's rate on average, on the ticks at or after each one is due.
+    const ros::Duration period(1.0 / laser_.scan_rate);
+    next_scan_ = next_scan_.isZero() || now - next_scan_ > period ? now + period : next_scan_ + period;
+    sensor_msgs::LaserScan scan;
+    scan.header.stamp = now;
+    scan.header.frame_id = laser_frame_;
+    scan.angle_min = static_cast<float>(laser_.angle_min);
+    scan.angle_increment = static_cast<float>(laser_.angle_increment);
+    scan.angle_max = static_cast<float>(laser_.angle_min + (laser_.beams - 1) * laser_.angle_increment);
+    scan.scan_time = static_cast<float>(1.0 / laser_.scan_rate);
+    scan.range_min = static_cast<float>(laser_.range_min);
+    scan.range_max = static_cast<float>(laser_.range_max);
+    const Pose2& truth = robot_.pose();
+    scan.ranges = eaci::robot::castScan(world_->frame(), world_->at(t), truth.position, truth.orientation.angle(),
+                                        laser_, &noise_);
+    scan_pub_.publish(scan);
+    if (boxes_pub_.getNumSubscribers() > 0 || !boxes_published_) publishBoxes(t, now);
+  }
+
+  void publishBoxes(double t, const ros::Time& now) {
+    visualization_msgs::MarkerArray markers;
+    int id = 0;
+    for (const auto& b : world_->boxesAt(t)) {
+      visualization_msgs::Marker m;
+      m.header.stamp = now;
+      m.header.frame_id = world_frame_;
+      m.ns = "boxes";
+      m.id = id++;
+      m.type = visualization_msgs::Marker::CUBE;
+      m.pose.position.x = b.centre.x();
+      m.pose.position.y = b.centre.y();
+      m.pose.position.z = 0.2;
+      m.pose.orientation.w = 1.0;
+      m.scale.x = b.size.x();
+      m.scale.y = b.size.y();
+      m.scale.z = 0.4;
+      m.color.r = 0.8f, m.color.g = 0.5f, m.color.b = 0.1f, m.color.a = 0.9f;
+      markers.markers.push_back(m);
+    }
+    boxes_pub_.publish(markers);
+    boxes_published_ = true;
   }
 
   nav_msgs::Odometry odometryMessage(const Pose2& pose, double v, double omega, const ros::Time& stamp) const {
@@ -112,7 +268,7 @@ class DiffDriveSim {
   }
 
   ros::NodeHandle nh_, private_nh_;
-  std::string odom_frame_, base_frame_;
+  std::string odom_frame_, base_frame_, laser_frame_, world_frame_ = "map";
   double cmd_timeout_ = 0.5;
   eaci::robot::DiffDriveRobot robot_;
   eaci::robot::WheelEncoders encoders_;
@@ -123,6 +279,17 @@ class DiffDriveSim {
   ros::Subscriber cmd_sub_;
   ros::Timer timer_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  // The laser and the world it sees (none without ~world_map).
+  std::optional<eaci::robot::SimWorld> world_;
+  eaci::robot::LaserSpec laser_;
+  eaci::SplitMix64 noise_{1};
+  Eigen::Vector2d footprint_half_ = Eigen::Vector2d::Zero();
+  ros::Time started_, next_scan_;
+  double box_clock_ = 0.0;   // s: how far the moving box has gone along its line and back
+  double box_margin_ = 0.1;  // m: the moving box does not come nearer the car than this
+  bool boxes_published_ = false;
+  ros::Publisher scan_pub_, clearance_pub_, boxes_pub_;
+  tf2_ros::StaticTransformBroadcaster static_broadcaster_;
 };
 
 }  // namespace eaci_ros
