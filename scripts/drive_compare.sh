@@ -9,17 +9,20 @@
 # space and the navigation workspace first (docs/ros.md; docs/notebook/2026-12-01-driving-to-the-lab-goals.md).
 #
 # Usage: scripts/drive_compare.sh [--runs N] [--rounds R] [--out DIR] [--map YAML] [--goals "x,y;x,y"]
-#                                 [--start x,y[,yaw]] [--world WORLD.yaml] [LABEL=PLANNER[@PARAMS.yaml] ...]
+#                                 [--start x,y[,yaw]] [--world WORLD.yaml] [--launch NAME:=VALUE ...]
+#                                 [LABEL=PLANNER[@PARAMS.yaml] ...]
 #   defaults: 3 runs of 1 round; navfn=navfn/NavfnROS eaci=eaci_planner/EaciGlobalPlanner
 #   PARAMS.yaml is loaded into move_base's namespace over the config (the launch file's
 #   extra_params), e.g. eaci-tc1=eaci_planner/EaciGlobalPlanner@tc1.yaml with
 #   "EaciGlobalPlanner: {turn_cost: 1.0}". --start: where the car starts, yaw in radians (default 0).
 #   --world: obstacles the map does not hold, for the car's laser (diff_drive_sim's boxes and
-#   moving_box, e.g. config/lab_boxes.yaml; the launch file's world_params).
+#   moving_box, e.g. config/lab_boxes.yaml; the launch file's world_params). --launch: more arguments
+#   of launch/move_base_demo.launch, e.g. world_map:=maps/lab.yaml localization:=amcl
+#   encoder_noise_ticks:=2 (driving on a map gmapping made, in the lab's world, localised by amcl).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs_count=3 rounds=1 out=out/drive map="" goals="" start="" world=""
-specs=()
+specs=() launch_args=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs_count=$2; shift 2 ;;
@@ -29,7 +32,8 @@ while [ $# -gt 0 ]; do
     --goals) goals=$2; shift 2 ;;
     --start) start=$2; shift 2 ;;
     --world) world=$(realpath "$2"); shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    --launch) launch_args+=("$2"); shift 2 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     -*) echo "drive_compare: unknown option $1 (--help)" >&2; exit 2 ;;
     *) specs+=("$1"); shift ;;
   esac
@@ -67,7 +71,7 @@ for run in $(seq 1 "$runs_count"); do
     sleep 3
     roslaunch eaci_planner move_base_demo.launch base_global_planner:="$planner" extra_params:="$params" \
       ${map:+map_file:=$(realpath "$map")} ${start:+start_x:=$start_x start_y:=$start_y start_yaw:=$start_yaw} \
-      ${world:+world_params:="$world"} \
+      ${world:+world_params:="$world"} ${launch_args[@]+"${launch_args[@]}"} \
       >"$out/$name.launch.log" 2>&1 & pids+=($!)
     /usr/bin/python3 scripts/drive_goals.py --rounds "$rounds" --json "$out/$name.json" --trace "$out/$name.csv" \
       ${map:+--map "$map"} ${goals:+--goals "$goals"} | tee "$out/$name.txt"

@@ -116,6 +116,36 @@ TEST(SimWorld, TheFootprintsClearanceFromABoxIsMeasuredToTheBoxItself) {
   EXPECT_DOUBLE_EQ(moving.footprintClearance(pose(2, 2, 0), kCarHalf, 2.0, 3.0), 0.0);
 }
 
+// A box of 0.2 m walking from x = 0 to x = 4 at 1 m/s towards a car standing across its line at
+// x = 2 (its near side at x = 2 - 0.1325): the box stops 0.1 m short of it, waits 2 s, turns round.
+TEST(SimWorld, TheMovingBoxWaitsShortOfTheCarThenTurnsRound) {
+  const MovingBox m{box(0, 0, 0.2, 0.2), Eigen::Vector2d(4, 0), 1.0};
+  const auto car = corners(pose(2, 0, 0), kCarHalf);
+  const auto distance = [&](const Box& b) { return quadDistance(car, corners(b)); };
+  BoxWalker walker;
+  double nearest = 10.0, furthest_x = 0.0;
+  for (int tick = 0; tick < 250; ++tick) {  // 2.5 s at 0.01 s
+    walker.step(m, 0.01, 0.1, 2.0, distance);
+    nearest = std::min(nearest, distance(boxAt(m, walker.clock)));
+    furthest_x = std::max(furthest_x, boxAt(m, walker.clock).centre.x());
+  }
+  EXPECT_GT(nearest, 0.1);
+  EXPECT_NEAR(furthest_x, 2.0 - 0.1325 - 0.1 - 0.1, 0.011);  // its front edge 0.1 m from the car
+  EXPECT_DOUBLE_EQ(walker.direction, 1.0);                    // 1.67 s walking, 0.83 s waiting
+  for (int tick = 0; tick < 200; ++tick) walker.step(m, 0.01, 0.1, 2.0, distance);  // turns at 3.67 s
+  EXPECT_DOUBLE_EQ(walker.direction, -1.0);
+  EXPECT_LT(boxAt(m, walker.clock).centre.x(), furthest_x - 0.5);  // walking back the way it came
+}
+
+// A car beside the line, nearer than the margin, does not hold a box walking away from it.
+TEST(SimWorld, TheMovingBoxWalksAwayFromACarBesideIt) {
+  const MovingBox m{box(1.0, 0, 0.2, 0.2), Eigen::Vector2d(4, 0), 1.0};
+  const auto car = corners(pose(1.0, 0.2, 0), kCarHalf);  // overlapping the box, even
+  BoxWalker walker;
+  walker.step(m, 0.1, 0.1, 2.0, [&](const Box& b) { return quadDistance(car, corners(b)); });
+  EXPECT_NEAR(boxAt(m, walker.clock).centre.x(), 1.1, 1e-9);
+}
+
 TEST(SimWorld, RefusesABoxWithoutSizeAndAMapOfTheWrongSize) {
   EXPECT_THROW(SimWorld(tenMetres(), emptyCells(), {box(1, 1, 0.0, 0.5)}), std::invalid_argument);
   EXPECT_THROW(SimWorld(tenMetres(), emptyCells(), {}, MovingBox{box(1, 1, 0.5, 0.5), Eigen::Vector2d(2, 2), -1.0}),

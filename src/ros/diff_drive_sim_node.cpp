@@ -15,7 +15,8 @@
 //   ~boxes: [[x, y, size_x, size_y], ...] more obstacles (m, world frame, axis-aligned)
 //   ~moving_box: [x, y, size_x, size_y, to_x, to_y, speed]: a box going from (x, y) to (to_x, to_y)
 //     and back at speed m/s from the node's start; it waits while its next step would bring it
-//     nearer the car's footprint than ~moving_box_margin (0.1 m), as a person would
+//     nearer the car's footprint than ~moving_box_margin (0.1 m) and turns round after 2 s of
+//     waiting, as a person would (eaci::robot::BoxWalker)
 //   ~laser_frame ("laser", at ~laser_height 0.18 m above base_link), ~scan_rate (12 Hz),
 //     ~range_max (30 m), ~range_sigma (0.015 m: the M10P's +-3 cm as two standard deviations)
 //   ~footprint_length, ~footprint_width (0.265, 0.205 m: the car, for ~footprint_clearance)
@@ -150,7 +151,8 @@ class DiffDriveSim {
     private_nh_.param<std::string>("world_map", world_map, "");
     if (world_map.empty()) return;
     const eaci::OccupancyMap map = eaci::loadMapServerYaml(world_map);
-    world_.emplace(map, occupiedCells(map), readBoxes(private_nh_), readMovingBox(private_nh_));
+    moving_box_ = readMovingBox(private_nh_);
+    world_.emplace(map, occupiedCells(map), readBoxes(private_nh_), moving_box_);
     private_nh_.param<std::string>("laser_frame", laser_frame_, "laser");
     private_nh_.param<std::string>("world_frame", world_frame_, world_frame_);
     private_nh_.param("scan_rate", laser_.scan_rate, laser_.scan_rate);
@@ -181,17 +183,20 @@ class DiffDriveSim {
     mount.transform.rotation.w = 1.0;
     static_broadcaster_.sendTransform(mount);
     ROS_INFO("diff_drive_sim: a laser on %s at %.0f Hz sees %s and %zu boxes%s", laser_frame_.c_str(), laser_.scan_rate,
-             world_map.c_str(), world_->boxesAt(0).size(), readMovingBox(private_nh_) ? ", one of them moving" : "");
+             world_map.c_str(), world_->boxesAt(0).size(), moving_box_ ? ", one of them moving" : "");
   }
 
   // The footprint's clearance every tick; a scan and the boxes when one is due.
   void sense(const ros::Time& now, double dt) {
-    // The moving box's clock runs while the box keeps more than its margin from the car.
+    // The moving box walks on unless it would come nearer the car than its margin (BoxWalker).
     const Pose2& car = robot_.pose();
-    const auto next = world_->movingBoxAt(box_clock_ + dt);
-    if (next && eaci::robot::quadDistance(eaci::robot::corners(car, footprint_half_), eaci::robot::corners(*next)) > box_margin_)
-      box_clock_ += dt;
-    const double t = box_clock_;
+    if (moving_box_) {
+      const auto footprint = eaci::robot::corners(car, footprint_half_);
+      box_walker_.step(*moving_box_, dt, box_margin_, 2.0, [&](const eaci::robot::Box& b) {
+        return eaci::robot::quadDistance(footprint, eaci::robot::corners(b));
+      });
+    }
+    const double t = box_walker_.clock;
     std_msgs::Float64 clearance;
     clearance.data = world_->footprintClearance(robot_.pose(), footprint_half_, t, 1.0);
     clearance_pub_.publish(clearance);
@@ -285,7 +290,8 @@ class DiffDriveSim {
   eaci::SplitMix64 noise_{1};
   Eigen::Vector2d footprint_half_ = Eigen::Vector2d::Zero();
   ros::Time started_, next_scan_;
-  double box_clock_ = 0.0;   // s: how far the moving box has gone along its line and back
+  std::optional<eaci::robot::MovingBox> moving_box_;
+  eaci::robot::BoxWalker box_walker_;
   double box_margin_ = 0.1;  // m: the moving box does not come nearer the car than this
   bool boxes_published_ = false;
   ros::Publisher scan_pub_, clearance_pub_, boxes_pub_;

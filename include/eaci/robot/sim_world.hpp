@@ -32,9 +32,7 @@ struct Box {
 };
 
 // A box whose centre goes from `box.centre` to `to` and back, again and again, at `speed` (m/s),
-// leaving `box.centre` at time 0. (Its time is the simulation's to give: diff_drive_sim holds it
-// while the box would come nearer the car than a margin, as a person walking through a room
-// stops rather than walk into a robot.)
+// leaving `box.centre` at time 0. (Its time is the simulation's to give: BoxWalker.)
 struct MovingBox {
   Box box;
   Eigen::Vector2d to = Eigen::Vector2d::Zero();
@@ -72,6 +70,31 @@ inline Box boxAt(const MovingBox& m, double t) {
   b.centre += line * (along / length);
   return b;
 }
+
+// How the moving box walks along its line: its clock (boxAt's t) runs while its next step keeps
+// it more than `margin` from the car or takes it no nearer; otherwise the box waits, and after
+// `patience` s of waiting it turns round, as a person who finds the way blocked would.
+struct BoxWalker {
+  double clock = 0.0;      // s
+  double direction = 1.0;  // +1: the clock runs forward, -1: back (the box retraces its steps)
+  double waited = 0.0;     // s waited since it last moved
+
+  template <class Distance>  // Distance(const Box&) -> m from the car
+  void step(const MovingBox& m, double dt, double margin, double patience, const Distance& distance_to_car) {
+    const double length = (m.to - m.box.centre).norm();
+    if (length == 0.0 || m.speed == 0.0 || !(dt > 0)) return;
+    const double period = 2.0 * length / m.speed;
+    const double next = std::fmod(std::fmod(clock + direction * dt, period) + period, period);
+    const double now_distance = distance_to_car(boxAt(m, clock)), next_distance = distance_to_car(boxAt(m, next));
+    if (next_distance > margin || next_distance >= now_distance) {
+      clock = next;
+      waited = 0.0;
+    } else if ((waited += dt) >= patience) {
+      direction = -direction;
+      waited = 0.0;
+    }
+  }
+};
 
 // The corners of a box, or of a rectangle of `half_size` at a pose (x forward), counter-clockwise.
 inline std::array<Eigen::Vector2d, 4> corners(const Box& b) {
