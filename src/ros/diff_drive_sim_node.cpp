@@ -192,13 +192,13 @@ class DiffDriveSim {
     const Pose2& car = robot_.pose();
     if (moving_box_) {
       const auto footprint = eaci::robot::corners(car, footprint_half_);
-      box_walker_.step(*moving_box_, dt, box_margin_, 2.0, [&](const eaci::robot::Box& b) {
+      box_walker_.step(*moving_box_, dt, box_margin_, kBoxPatience, [&](const eaci::robot::Box& b) {
         return eaci::robot::quadDistance(footprint, eaci::robot::corners(b));
       });
     }
     const double t = box_walker_.clock;
     std_msgs::Float64 clearance;
-    clearance.data = world_->footprintClearance(robot_.pose(), footprint_half_, t, 1.0);
+    clearance.data = world_->footprintClearance(car, footprint_half_, t, 1.0);
     clearance_pub_.publish(clearance);
     if (!next_scan_.isZero() && now < next_scan_) return;
     // Scans keep the laser's rate on average, on the ticks at or after each one is due.
@@ -213,9 +213,8 @@ class DiffDriveSim {
     scan.scan_time = static_cast<float>(1.0 / laser_.scan_rate);
     scan.range_min = static_cast<float>(laser_.range_min);
     scan.range_max = static_cast<float>(laser_.range_max);
-    const Pose2& truth = robot_.pose();
-    scan.ranges = eaci::robot::castScan(world_->frame(), world_->at(t), truth.position, truth.orientation.angle(),
-                                        laser_, &noise_);
+    scan.ranges = eaci::robot::castScan(world_->frame(), world_->at(t), car.position, car.orientation.angle(), laser_,
+                                        &noise_);
     scan_pub_.publish(scan);
     if (boxes_pub_.getNumSubscribers() > 0 || !boxes_published_) publishBoxes(t, now);
   }
@@ -292,6 +291,7 @@ class DiffDriveSim {
   ros::Time started_, next_scan_;
   std::optional<eaci::robot::MovingBox> moving_box_;
   eaci::robot::BoxWalker box_walker_;
+  static constexpr double kBoxPatience = 2.0;  // s the moving box waits for the car before it turns round
   double box_margin_ = 0.1;  // m: the moving box does not come nearer the car than this
   bool boxes_published_ = false;
   ros::Publisher scan_pub_, clearance_pub_, boxes_pub_;
