@@ -4,10 +4,18 @@
 # "2D Nav Goal" sends it (the route before smoothing and the islands are made only while someone
 # listens), and SECONDS later (default 6) ImageMagick's import grabs the window. Needs Debian's rviz, xvfb and imagemagick, and the package's devel or
 # install space sourced.
-# Usage: scripts/rviz_screenshot.sh [OUT.png] [SECONDS]     (default docs/figures/rviz_demo.png)
+# With --seeing: launch/move_base_demo.launch instead, the car with its laser among the boxes of
+# config/lab_boxes.yaml (the scan, the boxes, the global costmap and EACI's plan; needs the
+# navigation stack), default docs/figures/rviz_seeing.png.
+# Usage: scripts/rviz_screenshot.sh [--seeing] [OUT.png] [SECONDS]     (default docs/figures/rviz_demo.png)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=${1:-docs/figures/rviz_demo.png} wait_s=${2:-6}
+launch=(demo.launch) default_out=docs/figures/rviz_demo.png
+if [ "${1:-}" = "--seeing" ]; then
+  launch=(move_base_demo.launch "world_params:=$PWD/config/lab_boxes.yaml") default_out=docs/figures/rviz_seeing.png
+  shift
+fi
+out=${1:-$default_out} wait_s=${2:-6}
 for tool in Xvfb import rviz roslaunch; do
   command -v "$tool" >/dev/null || { echo "rviz_screenshot: $tool not found (apt-get install rviz xvfb imagemagick; source the ROS setup)" >&2; exit 1; }
 done
@@ -20,7 +28,7 @@ trap cleanup EXIT
 Xvfb "$display" -screen 0 1400x900x24 >/dev/null 2>&1 & pids+=($!)
 roscore -p "$port" >/dev/null 2>&1 & pids+=($!)
 sleep 3
-roslaunch eaci_planner demo.launch rviz:=true >"${RVIZ_SHOT_LOG:-/dev/null}" 2>&1 & pids+=($!)
+roslaunch eaci_planner "${launch[@]}" rviz:=true >"${RVIZ_SHOT_LOG:-/dev/null}" 2>&1 & pids+=($!)
 sleep 10
 rostopic pub -1 /move_base_simple/goal geometry_msgs/PoseStamped \
   '{header: {frame_id: map}, pose: {position: {x: 4.2, y: 0.5}, orientation: {w: 1.0}}}' >/dev/null
