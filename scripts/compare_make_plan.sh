@@ -31,19 +31,15 @@ done
 [ ${#maps[@]} -gt 0 ] || { echo "compare_make_plan: give at least one map (--help)" >&2; exit 2; }
 rospack find move_base >/dev/null 2>&1 || { echo "compare_make_plan: move_base not found: source the navigation workspace" >&2; exit 1; }
 mkdir -p "$out"
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null || true; done; sleep 3
-            for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; pids=(); }
-trap cleanup EXIT
+# shellcheck source=scripts/ros_session.sh
+source scripts/ros_session.sh   # pids, ros_core, ros_cleanup (the scripts run from the repository root)
 $profile && export ROSCONSOLE_CONFIG_FILE=$PWD/config/rosconsole_profile.conf
 nodes=move_base,move_base_other third_arg=()
 [ "$third" = none ] || { nodes=$nodes,move_base_third; third_arg=(third_planner:="$third"); }
 for map in "${maps[@]}"; do
   name=$(basename "$map" .yaml)
   port=$((11900 + RANDOM % 90))
-  export ROS_MASTER_URI=http://localhost:$port
-  roscore -p "$port" >"$out/$name.roscore.log" 2>&1 & pids+=($!)
-  sleep 3
+  ros_core "$port" "$out/$name.roscore.log"
   roslaunch eaci_planner compare_planners.launch map_file:="$(realpath "$map")" "${third_arg[@]}" \
     >"$out/$name.launch.log" 2>&1 & pids+=($!)
   # The first request on each node's new costmap (the planner's first copy, cold buffers), apart,
@@ -69,6 +65,6 @@ PY
     /usr/bin/python3 scripts/probe_make_plan.py --compare "$out/$name-$other.json" "$out/$name-move_base.json" \
       | tee "$out/$name.compare-$other.txt"
   done
-  cleanup
+  ros_cleanup
   $profile && /usr/bin/python3 scripts/profile_summary.py "$out/$name.launch.log" | tee "$out/$name.profile.txt"
 done

@@ -53,10 +53,8 @@ rospack find eaci_planner >/dev/null 2>&1 || {
 mkdir -p "$out"
 
 port=$((11600 + RANDOM % 300))
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null || true; done; sleep 3
-            for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; pids=(); }
-trap cleanup EXIT
+# shellcheck source=scripts/ros_session.sh
+source scripts/ros_session.sh   # pids, ros_core, ros_cleanup (the scripts run from the repository root)
 
 declare -A files
 for run in $(seq 1 "$runs_count"); do
@@ -64,18 +62,16 @@ for run in $(seq 1 "$runs_count"); do
     label=${spec_item%%=*} spec=${spec_item#*=}
     planner=${spec%%@*} params=""
     [ "$spec" != "$planner" ] && params=$(realpath "${spec#*@}")
-    export ROS_MASTER_URI=http://localhost:$port
     name=$label.run$run
-    echo "drive_compare: run $run of $runs_count, $label ($planner${params:+, $params}), master $ROS_MASTER_URI"
-    roscore -p "$port" >"$out/$name.roscore.log" 2>&1 & pids+=($!)
-    sleep 3
+    echo "drive_compare: run $run of $runs_count, $label ($planner${params:+, $params}), master http://localhost:$port"
+    ros_core "$port" "$out/$name.roscore.log"
     roslaunch eaci_planner move_base_demo.launch base_global_planner:="$planner" extra_params:="$params" \
       ${map:+map_file:=$(realpath "$map")} ${start:+start_x:=$start_x start_y:=$start_y start_yaw:=$start_yaw} \
       ${world:+world_params:="$world"} ${launch_args[@]+"${launch_args[@]}"} \
       >"$out/$name.launch.log" 2>&1 & pids+=($!)
     /usr/bin/python3 scripts/drive_goals.py --rounds "$rounds" --json "$out/$name.json" --trace "$out/$name.csv" \
       ${map:+--map "$map"} ${goals:+--goals "$goals"} | tee "$out/$name.txt"
-    cleanup
+    ros_cleanup
     port=$((port + 1))
     files[$label]="${files[$label]:+${files[$label]},}$out/$name.json"
   done

@@ -21,20 +21,16 @@ rospack find gmapping >/dev/null 2>&1 || {
 rospack find map_server >/dev/null 2>&1 || { echo "map_the_lab: map_server not found: source the navigation workspace" >&2; exit 1; }
 mkdir -p "$out"
 port=$((12300 + RANDOM % 100))
-export ROS_MASTER_URI=http://localhost:$port
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null || true; done; sleep 3
-            for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; pids=(); }
-trap cleanup EXIT
-roscore -p "$port" >"$out/roscore.log" 2>&1 & pids+=($!)
-sleep 3
+# shellcheck source=scripts/ros_session.sh
+source scripts/ros_session.sh   # pids, ros_core, ros_cleanup (the scripts run from the repository root)
+ros_core "$port" "$out/roscore.log"
 roslaunch eaci_planner gmapping_lab.launch "$@" >"$out/gmapping.log" 2>&1 & pids+=($!)
 sleep 5
 echo "map_the_lab: driving the tour while gmapping maps (log: $out/gmapping.log)"
 /usr/bin/python3 scripts/scripted_teleop.py
 sleep 5  # gmapping publishes the map every 2 s
 (cd "$out" && rosrun map_server map_saver -f lab_gmapping >map_saver.log 2>&1)  # the YAML names its image beside it
-cleanup
+ros_cleanup
 echo "map_the_lab: saved $out/lab_gmapping.yaml"
 plan=$(command -v eaci_plan || true)
 [ -n "$plan" ] || plan=$(catkin_find --first-only eaci_planner eaci_plan 2>/dev/null || true)

@@ -20,14 +20,11 @@ for tool in Xvfb import rviz roslaunch; do
   command -v "$tool" >/dev/null || { echo "rviz_screenshot: $tool not found (apt-get install rviz xvfb imagemagick; source the ROS setup)" >&2; exit 1; }
 done
 display=:$((70 + RANDOM % 20)) port=$((12100 + RANDOM % 100))
-export ROS_MASTER_URI=http://localhost:$port DISPLAY=$display LIBGL_ALWAYS_SOFTWARE=1
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null || true; done; sleep 3
-            for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; }
-trap cleanup EXIT
+export DISPLAY=$display LIBGL_ALWAYS_SOFTWARE=1
+# shellcheck source=scripts/ros_session.sh
+source scripts/ros_session.sh   # pids, ros_core, ros_cleanup (the scripts run from the repository root)
 Xvfb "$display" -screen 0 1400x900x24 >/dev/null 2>&1 & pids+=($!)
-roscore -p "$port" >/dev/null 2>&1 & pids+=($!)
-sleep 3
+ros_core "$port" /dev/null
 roslaunch eaci_planner "${launch[@]}" rviz:=true >"${RVIZ_SHOT_LOG:-/dev/null}" 2>&1 & pids+=($!)
 sleep 10
 rostopic pub -1 /move_base_simple/goal geometry_msgs/PoseStamped \

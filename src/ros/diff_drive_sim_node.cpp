@@ -75,12 +75,14 @@ std::optional<eaci::robot::MovingBox> readMovingBox(const ros::NodeHandle& nh) {
   return eaci::robot::MovingBox{{Eigen::Vector2d(v[0], v[1]), Eigen::Vector2d(v[2], v[3])}, Eigen::Vector2d(v[4], v[5]), v[6]};
 }
 
-// The world map's occupied cells (occupancy maps: 100; maps of costs: lethal and above).
+// The world map's obstacles as the planners read them (OccupancyMap::view); unknown cells are not
+// obstacles to the laser.
 std::vector<std::uint8_t> occupiedCells(const eaci::OccupancyMap& map) {
+  const eaci::GridView view = map.view(eaci::UnknownPolicy::kExpensive);
   std::vector<std::uint8_t> occupied(map.cells.size(), 0);
-  const std::uint8_t threshold = map.values == eaci::CellValues::kOccupancy ? eaci::kOccupiedValue : eaci::kDefaultLethalCost;
-  for (std::size_t i = 0; i < map.cells.size(); ++i)
-    occupied[i] = map.cells[i] != eaci::kUnknownValue && map.cells[i] >= threshold;
+  for (int row = 0; row < map.height; ++row)
+    for (int col = 0; col < map.width; ++col)
+      occupied[static_cast<std::size_t>(row) * map.width + col] = view.isObstacle(eaci::Cell{row, col});
   return occupied;
 }
 
@@ -151,8 +153,7 @@ class DiffDriveSim {
     private_nh_.param<std::string>("world_map", world_map, "");
     if (world_map.empty()) return;
     const eaci::OccupancyMap map = eaci::loadMapServerYaml(world_map);
-    moving_box_ = readMovingBox(private_nh_);
-    world_.emplace(map, occupiedCells(map), readBoxes(private_nh_), moving_box_);
+    world_.emplace(map, occupiedCells(map), readBoxes(private_nh_), readMovingBox(private_nh_));
     private_nh_.param<std::string>("laser_frame", laser_frame_, "laser");
     private_nh_.param<std::string>("world_frame", world_frame_, world_frame_);
     private_nh_.param("scan_rate", laser_.scan_rate, laser_.scan_rate);
@@ -183,16 +184,16 @@ class DiffDriveSim {
     mount.transform.rotation.w = 1.0;
     static_broadcaster_.sendTransform(mount);
     ROS_INFO("diff_drive_sim: a laser on %s at %.0f Hz sees %s and %zu boxes%s", laser_frame_.c_str(), laser_.scan_rate,
-             world_map.c_str(), world_->boxesAt(0).size(), moving_box_ ? ", one of them moving" : "");
+             world_map.c_str(), world_->boxesAt(0).size(), world_->movingBox() ? ", one of them moving" : "");
   }
 
   // The footprint's clearance every tick; a scan and the boxes when one is due.
   void sense(const ros::Time& now, double dt) {
     // The moving box walks on unless it would come nearer the car than its margin (BoxWalker).
     const Pose2& car = robot_.pose();
-    if (moving_box_) {
+    if (const auto& moving = world_->movingBox()) {
       const auto footprint = eaci::robot::corners(car, footprint_half_);
-      box_walker_.step(*moving_box_, dt, box_margin_, kBoxPatience, [&](const eaci::robot::Box& b) {
+      box_walker_.step(*moving, dt, box_margin_, kBoxPatience, [&](const eaci::robot::Box& b) {
         return eaci::robot::quadDistance(footprint, eaci::robot::corners(b));
       });
     }
@@ -289,7 +290,6 @@ class DiffDriveSim {
   eaci::SplitMix64 noise_{1};
   Eigen::Vector2d footprint_half_ = Eigen::Vector2d::Zero();
   ros::Time started_, next_scan_;
-  std::optional<eaci::robot::MovingBox> moving_box_;
   eaci::robot::BoxWalker box_walker_;
   static constexpr double kBoxPatience = 2.0;  // s the moving box waits for the car before it turns round
   double box_margin_ = 0.1;  // m: the moving box does not come nearer the car than this

@@ -58,14 +58,15 @@ inline std::string validationError(const MovingBox& m) {
   return e.str();
 }
 
-// Where the moving box stands at time t (s): its centre has gone speed * t along the line and
-// back, turning round at either end.
+// Where the moving box stands at time t (s, any sign): its centre has gone speed * t along the
+// line and back, turning round at either end (the motion repeats every 2 length / speed).
 inline Box boxAt(const MovingBox& m, double t) {
   const Eigen::Vector2d line = m.to - m.box.centre;
   const double length = line.norm();
   Box b = m.box;
-  if (length == 0.0 || m.speed == 0.0 || !(t > 0)) return b;
-  const double travelled = std::fmod(m.speed * t, 2.0 * length);
+  if (length == 0.0 || m.speed == 0.0 || !std::isfinite(t)) return b;
+  double travelled = std::fmod(m.speed * t, 2.0 * length);
+  if (travelled < 0) travelled += 2.0 * length;
   const double along = travelled <= length ? travelled : 2.0 * length - travelled;
   b.centre += line * (along / length);
   return b;
@@ -81,10 +82,8 @@ struct BoxWalker {
 
   template <class Distance>  // Distance(const Box&) -> m from the car
   void step(const MovingBox& m, double dt, double margin, double patience, const Distance& distance_to_car) {
-    const double length = (m.to - m.box.centre).norm();
-    if (length == 0.0 || m.speed == 0.0 || !(dt > 0)) return;
-    const double period = 2.0 * length / m.speed;
-    const double next = std::fmod(std::fmod(clock + direction * dt, period) + period, period);
+    if (!(dt > 0)) return;
+    const double next = clock + direction * dt;
     const double now_distance = distance_to_car(boxAt(m, clock)), next_distance = distance_to_car(boxAt(m, next));
     if (next_distance > margin || next_distance >= now_distance) {
       clock = next;
@@ -96,18 +95,14 @@ struct BoxWalker {
   }
 };
 
-// The corners of a box, or of a rectangle of `half_size` at a pose (x forward), counter-clockwise.
-inline std::array<Eigen::Vector2d, 4> corners(const Box& b) {
-  const Eigen::Vector2d h = 0.5 * b.size;
-  return {b.centre + Eigen::Vector2d(-h.x(), -h.y()), b.centre + Eigen::Vector2d(h.x(), -h.y()),
-          b.centre + Eigen::Vector2d(h.x(), h.y()), b.centre + Eigen::Vector2d(-h.x(), h.y())};
-}
+// The corners of a rectangle of `half_size` at a pose (x forward), or of a box, counter-clockwise.
 inline std::array<Eigen::Vector2d, 4> corners(const Pose2& pose, const Eigen::Vector2d& half_size) {
   const Eigen::Matrix2d r = pose.orientation.toRotationMatrix();
   const Eigen::Vector2d h = half_size;
   return {pose.position + r * Eigen::Vector2d(-h.x(), -h.y()), pose.position + r * Eigen::Vector2d(h.x(), -h.y()),
           pose.position + r * Eigen::Vector2d(h.x(), h.y()), pose.position + r * Eigen::Vector2d(-h.x(), h.y())};
 }
+inline std::array<Eigen::Vector2d, 4> corners(const Box& b) { return corners(Pose2{b.centre, {}}, 0.5 * b.size); }
 
 // The distance between two convex quadrilaterals (corners in order), 0 when they touch or overlap.
 inline double quadDistance(const std::array<Eigen::Vector2d, 4>& a, const std::array<Eigen::Vector2d, 4>& b) {
@@ -187,6 +182,8 @@ class SimWorld {
     return all;
   }
 
+  // The moving box, if there is one.
+  const std::optional<MovingBox>& movingBox() const { return moving_; }
   // Where the moving box stands at time t, if there is one.
   std::optional<Box> movingBoxAt(double t) const { return moving_ ? std::optional<Box>(boxAt(*moving_, t)) : std::nullopt; }
 
@@ -206,41 +203,41 @@ class SimWorld {
   // obstacle at time t: the map's occupied cells as squares and the boxes as they are; 0 when
   // they touch or overlap, `reach` when nothing is nearer.
   double footprintClearance(const Pose2& pose, const Eigen::Vector2d& half_size, double t, double reach) const {
+    if (!pose.position.allFinite()) return 0.0;  // a pose that is not a number touches everything
     const auto footprint = corners(pose, half_size);
     double best = reach;
-    for (const Box& b : boxesAt(t)) best = std::min(best, quadDistance(footprint, corners(b)));
-    const double radius = half_size.norm() + reach + frame_.resolution;
-    const Eigen::Vector2d low = (pose.position - frame_.origin) / frame_.resolution - Eigen::Vector2d::Constant(radius / frame_.resolution);
-    const Eigen::Vector2d high = (pose.position - frame_.origin) / frame_.resolution + Eigen::Vector2d::Constant(radius / frame_.resolution);
-    if (!low.allFinite() || !high.allFinite()) return 0.0;  // a pose that is not a number touches everything
-    const int col0 = static_cast<int>(std::clamp(std::floor(low.x()), 0.0, double(frame_.width)));
-    const int col1 = static_cast<int>(std::clamp(std::ceil(high.x()), 0.0, double(frame_.width))) - 1;
-    const int up0 = static_cast<int>(std::clamp(std::floor(low.y()), 0.0, double(frame_.height)));
-    const int up1 = static_cast<int>(std::clamp(std::ceil(high.y()), 0.0, double(frame_.height))) - 1;
-    for (int up = up0; up <= up1; ++up) {
-      const int row = frame_.height - 1 - up;
-      for (int col = col0; col <= col1; ++col) {
-        if (occupied_[static_cast<std::size_t>(row) * frame_.width + col] == 0) continue;
-        best = std::min(best, quadDistance(footprint, corners(cellBox(frame_, {row, col}))));
-      }
-    }
+    for (const Box& b : boxes_) best = std::min(best, quadDistance(footprint, corners(b)));
+    if (moving_) best = std::min(best, quadDistance(footprint, corners(boxAt(*moving_, t))));
+    const Eigen::Vector2d radius = Eigen::Vector2d::Constant(half_size.norm() + reach + frame_.resolution);
+    forEachCellIn(pose.position - radius, pose.position + radius, [&](const Cell& c, std::size_t i) {
+      if (occupied_[i] != 0) best = std::min(best, quadDistance(footprint, corners(cellBox(frame_, c))));
+    });
     return best;
   }
 
  private:
-  // The cells a fixed box covers are obstacles to the laser, as the map's are.
-  void burnIn(const Box& b) {
-    const Eigen::Vector2d low = (b.centre - 0.5 * b.size - frame_.origin) / frame_.resolution;
-    const Eigen::Vector2d high = (b.centre + 0.5 * b.size - frame_.origin) / frame_.resolution;
-    const int col0 = static_cast<int>(std::clamp(std::floor(low.x()), 0.0, double(frame_.width)));
-    const int col1 = static_cast<int>(std::clamp(std::ceil(high.x()), 0.0, double(frame_.width)));
-    const int up0 = static_cast<int>(std::clamp(std::floor(low.y()), 0.0, double(frame_.height)));
-    const int up1 = static_cast<int>(std::clamp(std::ceil(high.y()), 0.0, double(frame_.height)));
+  // Calls f(cell, index) for every cell of the map whose square meets the world rectangle
+  // low .. high (m).
+  template <class F>
+  void forEachCellIn(const Eigen::Vector2d& low, const Eigen::Vector2d& high, const F& f) const {
+    const Eigen::Vector2d from = ((low - frame_.origin) / frame_.resolution).array().floor();
+    const Eigen::Vector2d to = ((high - frame_.origin) / frame_.resolution).array().ceil();
+    const int col0 = static_cast<int>(std::clamp(from.x(), 0.0, double(frame_.width)));
+    const int col1 = static_cast<int>(std::clamp(to.x(), 0.0, double(frame_.width)));
+    const int up0 = static_cast<int>(std::clamp(from.y(), 0.0, double(frame_.height)));
+    const int up1 = static_cast<int>(std::clamp(to.y(), 0.0, double(frame_.height)));
     for (int up = up0; up < up1; ++up)
       for (int col = col0; col < col1; ++col) {
         const Cell c{frame_.height - 1 - up, col};
-        if (covers(b, frame_, c)) seen_[static_cast<std::size_t>(c.row) * frame_.width + col] = 1;
+        f(c, static_cast<std::size_t>(c.row) * frame_.width + col);
       }
+  }
+
+  // The cells a fixed box covers are obstacles to the laser, as the map's are.
+  void burnIn(const Box& b) {
+    forEachCellIn(b.centre - 0.5 * b.size, b.centre + 0.5 * b.size, [&](const Cell& c, std::size_t i) {
+      if (covers(b, frame_, c)) seen_[i] = 1;
+    });
   }
 
   MapFrame frame_;
